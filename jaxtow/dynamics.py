@@ -1,0 +1,142 @@
+"""The tow model and its vector field, thesis eqs 6.1-6.6 (MODEL.md section 2).
+
+State y = (u', v', r', l', γ, ψ): surge, sway, yaw rate of the towed vessel (body axes, at
+the CoG), towline length, towline angle to the tug's track, heading. The tug moves at unit
+non-dimensional speed along the earth x-axis and does not deviate (thesis assumption).
+The bow-hawser point H lies at (−l cos γ, +l sin γ) relative to the tug, the CoG at
+H − x_p (cos ψ, sin ψ); the towline pulls H toward the tug.
+"""
+
+from __future__ import annotations
+
+import abc
+import math
+
+import equinox as eqx
+import jax.numpy as jnp
+from jaxtyping import Array, Float
+
+from . import _validate as V
+from .towline import AbstractTowline
+from .vessel import Vessel
+
+STATE_NAMES = ("u", "v", "r", "l", "gamma", "psi")
+STATE_LONG_NAMES = (
+    "surge velocity u' (by U_tug)",
+    "sway velocity v' (by U_tug)",
+    "yaw rate r' (by U_tug/L)",
+    "towline length l' (by L)",
+    "towline angle gamma [rad]",
+    "heading psi [rad]",
+)
+
+
+class AbstractExternalForce(eqx.Module):
+    """Hook for environmental forces (waves, wind, current) on the towed vessel.
+
+    ``__call__(t, y, model)`` returns the non-dimensional body-axis forces
+    (X', Y', N') at the CoG, in the same scales as the manoeuvring forces (thesis eqs
+    6.14-6.16). Forces may depend on time and on (u, v, r, ψ); they must not depend on the
+    towline state (l, γ). Equilibria evaluate the hook at t = 0 and therefore assume the
+    force is time-invariant (mean forces); time-varying parts belong to time-domain runs.
+    """
+
+    @abc.abstractmethod
+    def __call__(self, t, y, model) -> Float[Array, "3"]:
+        ...
+
+
+class NoExternalForce(AbstractExternalForce):
+    """Calm water, no wind: zero environmental force."""
+
+    def __call__(self, t, y, model):
+        return jnp.zeros(3, dtype=jnp.result_type(y))
+
+
+class ConstantBodyForce(AbstractExternalForce):
+    """A constant body-axis force (X', Y', N'), e.g. a mean drift force in a fixed heading
+    frame or a test load."""
+
+    force: Float[Array, "3"] = eqx.field(converter=jnp.asarray)
+
+    def __check_init__(self):
+        V.check_finite("force", self.force)
+        if V.is_concrete(self.force) and jnp.shape(self.force) != (3,):
+            raise ValueError(f"parameter 'force' must have shape (3,), got {jnp.shape(self.force)}")
+
+    def __call__(self, t, y, model):
+        return self.force.astype(jnp.result_type(y))
+
+
+class TowModel(eqx.Module):
+    """A vessel on a towline behind a tug: the full parameter set of eqs 6.1-6.6.
+
+    ``psi_max``: largest |ψ| [rad] at which the manoeuvring model is trusted; equilibria
+    beyond it are flagged (default π/2: the vessel must move bow first).
+    """
+
+    vessel: Vessel
+    towline: AbstractTowline
+    external: AbstractExternalForce = NoExternalForce()
+    psi_max: Float[Array, ""] = eqx.field(converter=jnp.asarray, default=math.pi / 2)
+
+    def __check_init__(self):
+        V.check_range("psi_max", self.psi_max, 0.0, math.pi)
+
+    def checks(self) -> list:
+        """Run-time (traceable) parameter checks: (predicate, message) pairs naming the
+        parameter; apply them to an output with `jaxtow._validate.guard`."""
+        return (self.vessel.checks() + self.towline.checks()
+                + [V.check("psi_max", V.bad_outside(self.psi_max, 0.0, math.pi))])
+
+    @property
+    def assumed(self) -> tuple:
+        """Values of this model that are documented estimates, not published data."""
+        return self.vessel.assumed
+
+
+def force_breakdown(t, y, model: TowModel) -> dict:
+    """Forces acting on the vessel, per DOF (X', Y', N'), split by origin.
+
+    Returns a dict of (3,) arrays: ``manoeuvring`` (MMG hull forces), ``towline``
+    (eqs 2.8-2.10), ``coupling`` (the inertia-coupling terms (m+a22) v r, −(m+a11) u r, 0
+    of eqs 6.1-6.2), ``external`` (the environmental hook), and ``inertia`` (the
+    generalised masses (m+a11, m+a22, Izz+a66)), plus the scalar ``tension`` T'.
+    """
+    u, v, r, l, gamma, psi = (y[i] for i in range(6))
+    ves = model.vessel
+    T = model.towline.tension(l)
+    a = gamma + psi
+    towline = jnp.stack([T * jnp.cos(a), -T * jnp.sin(a), -T * model.towline.xp * jnp.sin(a)])
+    coupling = jnp.stack([(ves.m + ves.a22) * v * r, -(ves.m + ves.a11) * u * r, jnp.zeros_like(r)])
+    return dict(
+        manoeuvring=ves.manoeuvring_forces(u, v, r),
+        towline=towline,
+        coupling=coupling,
+        external=model.external(t, y, model),
+        inertia=ves.inertia(),
+        tension=T,
+    )
+
+
+def kinematics(y, xp) -> Float[Array, "3"]:
+    """Towline kinematics (l̇', γ̇, ψ̇), thesis eqs 6.4-6.6 (MODEL.md section 2)."""
+    u, v, r, l, gamma, psi = (y[i] for i in range(6))
+    a = gamma + psi
+    ldot = -u * jnp.cos(a) + v * jnp.sin(a) + jnp.cos(gamma) + r * xp * jnp.sin(a)
+    gdot = (u * jnp.sin(a) + v * jnp.cos(a) - jnp.sin(gamma) + r * xp * jnp.cos(a)) / l
+    return jnp.stack([ldot, gdot, r])
+
+
+def vector_field(t, y: Float[Array, "6"], model: TowModel) -> Float[Array, "6"]:
+    """dy/dt' of the tow, thesis eqs 6.1-6.6; signature f(t, y, args) as in diffrax."""
+    y = jnp.asarray(y)
+    fb = force_breakdown(t, y, model)
+    total = fb["manoeuvring"] + fb["towline"] + fb["coupling"] + fb["external"]
+    return jnp.concatenate([total / fb["inertia"], kinematics(y, model.towline.xp)])
+
+
+def sway_offset(y, xp):
+    """Sway offset of the CoG from the tug's track, y' = l' sin γ − x_p' sin ψ (eqs 2.16,
+    2.18); the fishtailing path width is its peak-to-peak value."""
+    return y[..., 3] * jnp.sin(y[..., 4]) - xp * jnp.sin(y[..., 5])

@@ -1,0 +1,100 @@
+"""Labelled sweep results: xarray Datasets with units and provenance, saved as NetCDF."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+
+import numpy as np
+import xarray as xr
+
+from ..parameters import describe
+from ..vessel import VESSEL_PARAMETERS
+
+#: name → (units, long_name) of the sweep outputs.
+VARIABLES = {
+    "psi": ("rad", "equilibrium heading psi"),
+    "gamma": ("rad", "equilibrium towline angle gamma"),
+    "tension": ("1", "equilibrium towline tension T' (by 0.5 rho T L U_tug^2)"),
+    "length": ("1", "equilibrium stretched towline length l' (by L)"),
+    "found": ("1", "slot holds an equilibrium (other slots are padding, values NaN)"),
+    "converged": ("1", "root finder converged"),
+    "taut": ("1", "towline taut (T' > 0)"),
+    "behind_tug": ("1", "vessel behind the tug (|gamma| < pi/2)"),
+    "in_range": ("1", "|psi| within the manoeuvring model's range psi_max"),
+    "valid": ("1", "found, converged, taut, behind the tug and in range"),
+    "branch": ("1", "branch: -1 (psi<0), 0 (straight behind), +1 (psi>0)"),
+    "residual": ("1", "max |f| of the vector field at the equilibrium"),
+    "eig_real": ("1", "real part of Jacobian eigenvalues (by U_tug/L)"),
+    "eig_imag": ("1", "imaginary part of Jacobian eigenvalues (by U_tug/L)"),
+    "max_real": ("1", "max real part of the eigenvalues (by U_tug/L); > 0 unstable"),
+    "stability": ("1", "-1 stable, 0 marginal, +1 unstable"),
+    "routh_hurwitz": ("1", "Routh-Hurwitz criterion: all eigenvalues in the left half-plane"),
+    "n_equilibria": ("1", "number of equilibria found"),
+    "truncated": ("1", "more equilibria exist than slots (raise max_roots)"),
+}
+_FLOAT_MASKED = ("psi", "gamma", "tension", "length", "residual", "eig_real", "eig_imag", "max_real")
+
+
+def model_attributes(model) -> dict:
+    """Provenance attributes: every fixed parameter value and the documented estimates."""
+    from .. import __version__
+
+    attrs = {"jaxtow_version": __version__, "vessel": model.vessel.name,
+             "towline_law": type(model.towline).__name__,
+             "external_force": type(model.external).__name__}
+    for n in VESSEL_PARAMETERS:
+        attrs[f"vessel_{n}"] = float(np.asarray(getattr(model.vessel, n)))
+    for f in dataclasses.fields(model.towline):
+        attrs[f"towline_{f.name}"] = float(np.asarray(getattr(model.towline, f.name)))
+    attrs["psi_max"] = float(np.asarray(model.psi_max))
+    attrs["assumed_values"] = json.dumps(dict(model.assumed)) if model.assumed else "none"
+    if model.assumed:
+        attrs["note"] = ("Results depend on documented estimates for values the source lacks: "
+                         + ", ".join(k for k, _ in model.assumed) + " (see jaxtow.presets).")
+    return attrs
+
+
+def sweep_dataset(model, arrays: dict, *, method: str) -> xr.Dataset:
+    coords = arrays["_coords"]
+    names = list(coords)
+    ds = xr.Dataset(coords={n: (n, v, dict(zip(("units", "long_name"), describe(n)))) for n, v in coords.items()})
+    nslot = arrays["psi"].shape[len(names)]
+    ds = ds.assign_coords(equilibrium=np.arange(nslot), mode=np.arange(6))
+    found = arrays["found"]
+    for k, v in arrays.items():
+        if k.startswith("_"):
+            continue
+        dims = list(names)
+        if v.ndim > len(names):
+            dims.append("equilibrium")
+        if v.ndim > len(names) + 1:
+            dims.append("mode")
+        if k in _FLOAT_MASKED:
+            mask = found if v.ndim == found.ndim else found[..., None]
+            v = np.where(mask, v, np.nan)
+        units, long_name = VARIABLES.get(k, ("1", k))
+        ds[k] = (dims, v, {"units": units, "long_name": long_name})
+    ds.attrs.update(model_attributes(model))
+    ds.attrs["equilibrium_method"] = method
+    ds.attrs["swept_parameters"] = ",".join(names)
+    return ds
+
+
+def save_dataset(ds: xr.Dataset, path) -> None:
+    """Write a dataset to NetCDF (booleans stored as int8, restored by `load_dataset`)."""
+    ds = ds.copy()
+    for k, v in ds.data_vars.items():
+        if v.dtype == bool:
+            ds[k] = v.astype("int8")
+            ds[k].attrs["jaxtow_bool"] = 1
+    ds.to_netcdf(path)
+
+
+def load_dataset(path) -> xr.Dataset:
+    ds = xr.load_dataset(path)
+    for k, v in ds.data_vars.items():
+        if v.attrs.get("jaxtow_bool"):
+            ds[k] = v.astype(bool)
+            del ds[k].attrs["jaxtow_bool"]
+    return ds

@@ -1,0 +1,131 @@
+"""Built-in vessels and the values the thesis text does not give.
+
+Barge 2 of the thesis (Hong et al. / Nam et al. raked barge, L = 76.2 m, B = 24.4 m) in two
+versions (thesis Table 3.7): **2a** without skegs (course unstable) and **2b** with skegs
+(course stable). The manoeuvring derivatives, mass and yaw inertia are the published values.
+
+The thesis text lacks the draft, the added masses and the towline stiffness. They are set
+here, in this one place, as documented estimates (`ASSUMPTIONS`); every model built from
+these presets carries the list in ``Vessel.assumed`` and every dataset in its attributes.
+
+* Draft T = 5.0 m: a loaded 250 ft × 80 ft (76.2 m × 24.4 m) deck barge, the class of the
+  Maritime Swift barge that Barge 2 is based on (thesis section 3.5), has a moulded depth of
+  about 6 m and a loaded draft of 4-5 m; 5.0 m is also the box draft used for Barge 1
+  panel computations in shared/notes. In the non-dimensional equations T only enters through
+  EA' (and later the wave-drift normalisation). Consistency check: m' = 2 C_B B/L gives
+  C_B = 0.928 from m' = 0.5943 independently of T, a plausible block coefficient for a
+  raked barge.
+* Added masses a22', a66' from the empirical regressions of Clarke, Gedling & Hine (1983),
+  "The application of manoeuvring criteria in hull design using linear theory", Trans.
+  RINA 125: −Y_v̇ / (½ρL³) = π(T/L)² [1 + 0.16 C_B B/T − 5.1 (B/L)²] and
+  −N_ṙ / (½ρL⁵) = π(T/L)² [1/12 + 0.017 C_B B/T − 0.33 B/L], converted to the ½ρTL² and
+  ½ρTL⁴ scales used here (multiply by L/T).
+* a11' = 0.05 m': the usual first estimate of surge added mass for full hull forms
+  (about 5 % of displacement mass; e.g. Brix, *Manoeuvring Technical Manual*, 1993).
+* Towline EA = 2.6e8 N: a 76 mm six-strand steel wire rope with IWRC (metallic area about
+  0.58·πd²/4 = 2.63e-3 m², rope modulus about 1.0e11 Pa), a usual main towline for a tow
+  of this size. EA' = EA / (½ρTLU_tug²), i.e. about 333 at U_tug = 2 m/s. The elastic
+  catenary of a long wire makes the effective stiffness lower; users model that by lowering
+  EA'.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .towline import Towline
+from .units import Scales
+from .vessel import Vessel
+
+#: Main particulars of Barge 2 (thesis section 3.5; L and B from the text).
+BARGE2_LENGTH = 76.2  # m
+BARGE2_BREADTH = 24.4  # m
+#: Tug speed used throughout thesis chapter 6.
+U_TUG_DEFAULT = 2.0  # m/s
+
+#: The documented estimates for values the thesis text lacks (see module docstring).
+ASSUMPTIONS = {
+    "draft": dict(value=5.0, units="m",
+                  note="loaded draft of a 76.2 m x 24.4 m deck barge; estimate, not from the thesis"),
+    "a11_over_m": dict(value=0.05, units="-",
+                       note="surge added mass 5 % of mass (Brix 1993); estimate"),
+    "a22,a66": dict(value=None, units="-",
+                    note="Clarke, Gedling & Hine (1983) regressions with C_B from m' and T = 5.0 m; estimate"),
+    "EA": dict(value=2.6e8, units="N",
+               note="76 mm 6-strand IWRC steel wire, EA = 1.0e11 Pa x 2.63e-3 m^2; estimate"),
+}
+
+# Published values, thesis Table 3.7 (Hong et al. [37], Nam et al. [51]).
+_TABLE_3_7 = {
+    "2a": dict(m=0.5943, Izz=0.0494, R0=0.0697, Xvv=-0.1999, Xrr=0.1288, Yv=-0.4003,
+               Yr=0.0161, Yvvv=-1.2109, Yrrr=0.9199, Nv=-0.1692, Nr=-0.0639, Nvvv=0.1184),
+    "2b": dict(m=0.5943, Izz=0.0494, R0=0.0747, Xvv=-0.3889, Xrr=-0.0924, Yv=-0.5998,
+               Yr=0.0875, Yvvv=-0.3269, Yrrr=0.0, Nv=-0.0624, Nr=-0.1004, Nvvv=-0.4149),
+}
+
+
+def barge2_scales(u_tug: float = U_TUG_DEFAULT, draft: float | None = None) -> Scales:
+    """Reference scales of Barge 2 (draft defaults to the documented estimate)."""
+    d = ASSUMPTIONS["draft"]["value"] if draft is None else draft
+    return Scales(length=BARGE2_LENGTH, draft=d, u_tug=u_tug)
+
+
+def block_coefficient_from_mass(m_nd: float, length: float, breadth: float) -> float:
+    """C_B from m' = m / (½ρTL²) = 2 C_B B / L (independent of the draft)."""
+    return m_nd * length / (2.0 * breadth)
+
+
+def clarke_added_mass(m_nd: float, length: float, breadth: float, draft: float,
+                      a11_fraction: float | None = None) -> dict:
+    """Added masses (a11', a22', a66') in the ½ρTL² / ½ρTL⁴ scales.
+
+    a22', a66' from Clarke, Gedling & Hine (1983) (see module docstring), a11' as a
+    fraction of m' (default `ASSUMPTIONS['a11_over_m']`).
+    """
+    if a11_fraction is None:
+        a11_fraction = ASSUMPTIONS["a11_over_m"]["value"]
+    cb = block_coefficient_from_mass(m_nd, length, breadth)
+    t_l, b_t, b_l = draft / length, breadth / draft, breadth / length
+    yvdot = math.pi * t_l**2 * (1.0 + 0.16 * cb * b_t - 5.1 * b_l**2)  # by ½ρL³
+    nrdot = math.pi * t_l**2 * (1.0 / 12.0 + 0.017 * cb * b_t - 0.33 * b_l)  # by ½ρL⁵
+    return dict(a11=a11_fraction * m_nd, a22=yvdot / t_l, a66=nrdot / t_l)
+
+
+def _barge2(version: str, draft: float | None) -> Vessel:
+    table = _TABLE_3_7[version]
+    d = ASSUMPTIONS["draft"]["value"] if draft is None else draft
+    added = clarke_added_mass(table["m"], BARGE2_LENGTH, BARGE2_BREADTH, d)
+    assumed = (
+        ("draft", f"T = {d} m: {ASSUMPTIONS['draft']['note']}"),
+        ("a11", ASSUMPTIONS["a11_over_m"]["note"]),
+        ("a22", ASSUMPTIONS["a22,a66"]["note"]),
+        ("a66", ASSUMPTIONS["a22,a66"]["note"]),
+    )
+    skeg = "without skegs, course unstable" if version == "2a" else "with skegs, course stable"
+    return Vessel(**table, **added, name=f"barge_{version} ({skeg})", assumed=assumed)
+
+
+def barge_2a(draft: float | None = None) -> Vessel:
+    """Barge 2a, without skegs (course unstable, c = −0.0723), thesis Table 3.7."""
+    return _barge2("2a", draft)
+
+
+def barge_2b(draft: float | None = None) -> Vessel:
+    """Barge 2b, with skegs (course stable, c = 0.0286), thesis Table 3.7."""
+    return _barge2("2b", draft)
+
+
+VESSELS = {"barge_2a": barge_2a, "barge_2b": barge_2b}
+
+
+def steel_wire_EA_nd(u_tug: float = U_TUG_DEFAULT, draft: float | None = None,
+                     EA: float | None = None) -> float:
+    """EA' = EA / (½ρTLU²) of the documented steel wire towline on Barge 2."""
+    EA = ASSUMPTIONS["EA"]["value"] if EA is None else EA
+    return EA / barge2_scales(u_tug, draft).force
+
+
+def default_towline(l0: float = 2.5, xp: float = 0.5, u_tug: float = U_TUG_DEFAULT,
+                    draft: float | None = None) -> Towline:
+    """Elastic steel towline for Barge 2 with the documented EA (estimate)."""
+    return Towline(l0=l0, xp=xp, EA=steel_wire_EA_nd(u_tug, draft))

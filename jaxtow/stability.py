@@ -1,0 +1,86 @@
+"""Linear stability of equilibria (MODEL.md section 5; thesis section 2.1.2).
+
+The full 6-state vector field is linearised by autodiff, A = ∂f/∂y, and the eigenvalues
+of A decide: stable if max Re λ < 0, unstable if > 0, marginal in between (within
+``tol``). The Routh-Hurwitz test on the characteristic polynomial gives an independent,
+binary cross-check. Gradients of max Re λ with respect to any parameter flow through the
+equilibrium (implicit differentiation of the root) and the eigenvalues.
+"""
+
+from __future__ import annotations
+
+import jax
+import jax.numpy as jnp
+from jaxtyping import Array, Bool, Complex, Float, Int
+
+from .dynamics import TowModel, vector_field
+
+STABLE, MARGINAL, UNSTABLE = -1, 0, 1
+STABILITY_LABELS = {STABLE: "stable", MARGINAL: "marginal", UNSTABLE: "unstable"}
+#: |max Re λ| below this counts as marginal.
+MARGINAL_TOL = 1e-9
+
+
+def jacobian(model: TowModel, y: Float[Array, "6"], t=0.0) -> Float[Array, "6 6"]:
+    """A = ∂f/∂y of the tow vector field at state y (forward-mode autodiff)."""
+    return jax.jacfwd(vector_field, argnums=1)(t, jnp.asarray(y), model)
+
+
+def eigenvalues(model: TowModel, y: Float[Array, "6"]) -> Complex[Array, "6"]:
+    """Eigenvalues of the Jacobian at y (non-dimensional, per L/U_tug)."""
+    return jnp.linalg.eigvals(jacobian(model, y))
+
+
+def max_real_eigenvalue(model: TowModel, y: Float[Array, "6"]) -> Float[Array, ""]:
+    """max Re λ(∂f/∂y) at y: < 0 stable, > 0 unstable (thesis figs 2.6b, 6.4)."""
+    return jnp.max(jnp.real(eigenvalues(model, y)))
+
+
+def classify(max_re, tol: float = MARGINAL_TOL) -> Int[Array, "..."]:
+    """−1 stable, 0 marginal, +1 unstable (see `STABILITY_LABELS`)."""
+    max_re = jnp.asarray(max_re)
+    return jnp.where(max_re < -tol, STABLE, jnp.where(max_re > tol, UNSTABLE, MARGINAL))
+
+
+def characteristic_polynomial(A: Float[Array, "n n"]) -> Float[Array, " n+1"]:
+    """Coefficients (1, c1, ..., cn) of det(λI − A) = λⁿ + c1 λⁿ⁻¹ + ... + cn.
+
+    Faddeev-LeVerrier recursion; independent of the eigenvalue solver.
+    """
+    n = A.shape[0]
+    eye = jnp.eye(n, dtype=A.dtype)
+    M = jnp.zeros_like(A)
+    c = [jnp.ones((), A.dtype)]
+    for k in range(1, n + 1):  # n is a static shape (6): unrolled, not a grid loop
+        M = A @ M + c[-1] * eye
+        c.append(-jnp.trace(A @ M) / k)
+    return jnp.stack(c)
+
+
+def hurwitz_determinants(coeffs: Float[Array, " n+1"]) -> Float[Array, " n"]:
+    """Leading principal minors Δ1..Δn of the Hurwitz matrix of a0 λⁿ + a1 λⁿ⁻¹ + ... + an."""
+    n = coeffs.shape[0] - 1
+    i = jnp.arange(n)[:, None]
+    j = jnp.arange(n)[None, :]
+    k = 2 * (j + 1) - (i + 1)
+    H = jnp.where((k >= 0) & (k <= n), coeffs[jnp.clip(k, 0, n)], 0.0)
+    return jnp.stack([jnp.linalg.det(H[:m, :m]) for m in range(1, n + 1)])
+
+
+def routh_hurwitz_stable(model: TowModel, y: Float[Array, "6"]) -> Bool[Array, ""]:
+    """Routh-Hurwitz criterion: all roots in the open left half-plane (binary answer)."""
+    c = characteristic_polynomial(jacobian(model, y))
+    return jnp.all(c > 0) & jnp.all(hurwitz_determinants(c) > 0)
+
+
+class StabilityResult(dict):
+    """Plain dict with keys ``eigenvalues`` (k, 6), ``max_real`` (k,), ``stability`` (k,)
+    and ``routh_hurwitz`` (k,) for a set of states."""
+
+
+def stability(model: TowModel, states: Float[Array, "k 6"]) -> StabilityResult:
+    """Eigenvalues, max Re λ, classification and Routh-Hurwitz verdict for each state."""
+    lam = jax.vmap(eigenvalues, in_axes=(None, 0))(model, states)
+    mr = jnp.max(jnp.real(lam), axis=-1)
+    rh = jax.vmap(routh_hurwitz_stable, in_axes=(None, 0))(model, states)
+    return StabilityResult(eigenvalues=lam, max_real=mr, stability=classify(mr), routh_hurwitz=rh)

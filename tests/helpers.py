@@ -1,0 +1,28 @@
+"""Shared test helpers: models, central finite differences."""
+
+import jax.numpy as jnp
+import numpy as np
+
+import jaxtow as jt
+
+
+def model(vessel, l0=2.5, xp=0.5, **kw):
+    return jt.TowModel(vessel=vessel, towline=jt.presets.default_towline(l0=l0, xp=xp), **kw)
+
+
+def central_jacobian(f, x, h=1e-6):
+    x = np.asarray(x, float)
+    cols = []
+    for i in range(x.size):
+        e = np.zeros_like(x)
+        e[i] = h
+        cols.append((np.asarray(f(x + e)) - np.asarray(f(x - e))) / (2 * h))
+    return np.stack(cols, axis=-1)
+
+
+def central_derivative(f, x, h=1e-6):
+    return (float(f(x + h)) - float(f(x - h))) / (2 * h)
+
+
+def vf_numpy(y, m):
+    return np.asarray(jt.vector_field(0.0, jnp.asarray(y), m))

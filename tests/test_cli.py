@@ -1,0 +1,62 @@
+"""The jaxtow command line (in-process, small grids)."""
+
+import json
+
+import pytest
+
+from jaxtow.cli import build_parser, main
+from jaxtow.io import load_dataset
+
+
+def test_help_lists_subcommands(capsys):
+    with pytest.raises(SystemExit) as e:
+        main(["--help"])
+    assert e.value.code == 0
+    out = capsys.readouterr().out
+    for sub in ("calm", "equilibria", "map"):
+        assert sub in out
+
+
+def test_calm_writes_figures_datasets_summary(tmp_path, capsys):
+    out = tmp_path / "res"
+    main(["calm", "--out", str(out), "--quiet", "--xp-grid", "0", "0.6", "13", "--l0-grid", "0.2", "2.5", "6",
+          "--map-xp", "0", "0.6", "4", "--map-l0", "0.2", "2.5", "3"])
+    names = {p.name for p in out.iterdir()}
+    for v in ("barge_2a", "barge_2b"):
+        for stem in ("equilibria_vs_xp", "max_real_vs_l0", "map_xp_l0"):
+            assert f"{v}_{stem}.png" in names and f"{v}_{stem}.nc" in names
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["barge_2a"]["equilibria_stability"] == ["unstable"]
+    assert summary["barge_2b"]["equilibria_stability"] == ["unstable", "stable", "unstable"]
+    ds = load_dataset(out / "barge_2b_max_real_vs_l0.nc")
+    assert ds.sizes["l0"] == 6
+    assert "estimates" in capsys.readouterr().out
+
+
+def test_equilibria_subcommand(capsys):
+    main(["equilibria", "--vessel", "barge_2b", "--xp", "0.5", "--l0", "1.0", "--eigenvalues"])
+    out = capsys.readouterr().out
+    assert out.count("stable") >= 3 and "eigenvalues" in out
+
+
+def test_map_subcommand_and_overrides(tmp_path, capsys):
+    main(["map", "--vessel", "barge_2a", "--param", "l0", "0.2", "2.5", "5", "--param", "EA", "50", "400", "3",
+          "--set", "a22=0.3", "--out", str(tmp_path), "--quiet"])
+    ds = load_dataset(tmp_path / "barge_2a_l0_EA.nc")
+    assert ds.attrs["vessel_a22"] == 0.3
+    assert (tmp_path / "barge_2a_l0_EA_map.png").exists()
+
+
+@pytest.mark.parametrize("argv, text", [
+    (["equilibria", "--l0", "-1"], "'l0'"),
+    (["equilibria", "--set", "a22=-1"], "'a22'"),
+    (["equilibria", "--set", "bogus=1"], "bogus"),
+    (["map", "--param", "xp", "0", "3", "4", "--quiet"], "'xp'"),
+    (["equilibria", "--vessel", "titanic"], "titanic"),
+])
+def test_bad_cli_input_is_a_clear_error(argv, text, tmp_path):
+    if argv[0] == "map":
+        argv = argv + ["--out", str(tmp_path)]
+    with pytest.raises(SystemExit) as e:
+        main(argv)
+    assert text in str(e.value)

@@ -1,0 +1,100 @@
+"""Equilibria (thesis eqs 6.7-6.13 and the heading residual of MODEL.md section 4)."""
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+import jaxtow as jt
+from helpers import central_derivative, model
+
+
+def test_fig_6_3_equilibrium_structure(barge_2a, barge_2b):
+    e = jt.equilibria(model(barge_2a, xp=0.5))
+    assert len(e) == 1 and e.branch.tolist() == [0]
+    e = jt.equilibria(model(barge_2a, xp=0.3))
+    assert len(e) == 3 and e.branch.tolist() == [-1, 0, 1]
+    assert np.degrees(e.psi[2]) == pytest.approx(18.6, abs=0.1)  # MODEL.md: ≈ ∓18.6°
+    e = jt.equilibria(model(barge_2b, xp=0.5))
+    assert len(e) == 3 and e.branch.tolist() == [-1, 0, 1]
+    np.testing.assert_allclose(np.degrees(np.abs(np.asarray(e.psi)[[0, 2]])), 76.0, atol=1.0)
+    assert np.all(e.valid)
+
+
+def test_side_equilibria_appear_at_analytic_pitchfork(barge_2a, barge_2b):
+    """Side equilibria exist for x_p' < N_v'/Y_v' (0.4227, 0.1040) and not beyond."""
+    for v, xc in ((barge_2a, 0.4227), (barge_2b, 0.1040)):
+        xc_exact = float(v.Nv / v.Yv)
+        assert xc_exact == pytest.approx(xc, abs=5e-5)
+        below = jt.equilibria(model(v, xp=xc_exact - 0.01))
+        above = jt.equilibria(model(v, xp=xc_exact + 0.01))
+        n_below, n_above = len(below), len(above)
+        # 2a: side pair exists below the pitchfork; 2b: the pair exists above it
+        if v is barge_2a:
+            assert (n_below, n_above) == (3, 1)
+        else:
+            assert (n_below, n_above) == (1, 3)
+
+
+@pytest.mark.parametrize("xp", [0.0, 0.1, 0.3, 0.45, 0.5, 0.6])
+@pytest.mark.parametrize("l0", [0.2, 1.0, 2.5])
+def test_numerical_equals_analytic_and_residual_small(barge_2a, barge_2b, xp, l0):
+    for v in (barge_2a, barge_2b):
+        m = model(v, l0=l0, xp=xp)
+        num = jt.equilibria(m)
+        ana = jt.analytic_equilibria(m).compact()
+        assert len(num) == len(ana)
+        np.testing.assert_allclose(num.state, ana.state, rtol=0, atol=1e-10)
+        assert np.all(num.residual < 1e-12)
+        assert np.all(num.converged)
+
+
+def test_power_law_towline_equilibria(barge_2b):
+    m = jt.TowModel(vessel=barge_2b, towline=jt.PowerLawTowline(l0=2.0, xp=0.5, Sb=60.0, q=1.7))
+    e = jt.equilibria(m)
+    assert len(e) == 3
+    assert np.all(e.residual < 1e-12)
+    np.testing.assert_allclose(jax.vmap(m.towline.tension)(e.length), e.tension, rtol=1e-12)
+
+
+def test_external_force_shifts_equilibrium(barge_2a):
+    """A constant sway force moves the straight-behind equilibrium off ψ = 0 and the
+    solver still lands on |f| < 1e-12."""
+    m = model(barge_2a, **{"external": jt.ConstantBodyForce(jnp.array([0.0, 0.01, 0.0]))})
+    e = jt.equilibria(m)
+    assert len(e) == 1
+    assert abs(float(e.psi[0])) > 1e-3
+    assert np.all(e.residual < 1e-12)
+
+
+def test_slack_equilibrium_is_flagged(barge_2a):
+    """An external force that exactly cancels the resistance needs no towline pull."""
+    m = model(barge_2a, xp=0.5, external=jt.ConstantBodyForce(jnp.array([float(barge_2a.R0), 0.0, 0.0])))
+    e = jt.equilibria(m)
+    straight = e.select(e.branch == 0)
+    assert not bool(straight.taut[0]) and not bool(straight.valid[0])
+    assert np.isfinite(straight.state).all()
+    # pushed forward harder than the resistance: the vessel would have to be ahead of the tug
+    m = model(barge_2a, xp=0.5, external=jt.ConstantBodyForce(jnp.array([0.2, 0.0, 0.0])))
+    e = jt.equilibria(m)
+    assert not bool(e.select(e.branch == 0).behind_tug[0])
+
+
+def test_heading_range_flag(barge_2b):
+    m = model(barge_2b, xp=0.5, psi_max=np.radians(60.0))
+    e = jt.equilibria(m)
+    assert e.in_range.tolist() == [False, True, False]
+    assert e.valid.tolist() == [False, True, False]
+
+
+def test_equilibrium_implicit_gradient(barge_2a):
+    """dψ_eq/dx_p through the optimistix root (implicit differentiation) = FD."""
+    m = model(barge_2a, xp=0.3)
+
+    def side_psi(xp):
+        mm = jt.with_parameters(m, xp=xp)
+        return jt.equilibria_fixed(mm, max_roots=3).psi[2]
+
+    g = float(jax.grad(side_psi)(0.3))
+    fd = central_derivative(lambda x: side_psi(x), 0.3, h=1e-6)
+    assert g == pytest.approx(fd, rel=1e-6)
