@@ -57,20 +57,33 @@ def characteristic_polynomial(A: Float[Array, "n n"]) -> Float[Array, " n+1"]:
     return jnp.stack(c)
 
 
-def hurwitz_determinants(coeffs: Float[Array, " n+1"]) -> Float[Array, " n"]:
-    """Leading principal minors Δ1..Δn of the Hurwitz matrix of a0 λⁿ + a1 λⁿ⁻¹ + ... + an."""
+def routh_first_column(coeffs: Float[Array, " n+1"]) -> Float[Array, " n+1"]:
+    """First column of the Routh array of a0 λⁿ + a1 λⁿ⁻¹ + ... + an.
+
+    Pure arithmetic (no LAPACK call): equal to Δk/Δk−1 of the Hurwitz determinants.
+    (Batched `jnp.linalg.det` calls, several per kernel, deadlocked XLA's CPU runtime on
+    large vmapped batches here; the Routh array avoids them.) A zero pivot gives ±inf/NaN
+    entries, which `routh_hurwitz_stable` counts as not stable.
+    """
     n = coeffs.shape[0] - 1
-    i = jnp.arange(n)[:, None]
-    j = jnp.arange(n)[None, :]
-    k = 2 * (j + 1) - (i + 1)
-    H = jnp.where((k >= 0) & (k <= n), coeffs[jnp.clip(k, 0, n)], 0.0)
-    return jnp.stack([jnp.linalg.det(H[:m, :m]) for m in range(1, n + 1)])
+    width = n // 2 + 2
+    pad = lambda v: jnp.concatenate([v, jnp.zeros(width - v.shape[0], v.dtype)])
+    prev2, prev1 = pad(coeffs[0::2]), pad(coeffs[1::2])
+    first = [prev2[0], prev1[0]]
+    for _ in range(n - 1):  # static n: the n+1 rows of the array
+        piv = prev1[0]
+        safe = jnp.where(piv != 0, piv, jnp.nan)
+        row = (piv * prev2[1:] - prev2[0] * prev1[1:]) / safe
+        row = jnp.concatenate([row, jnp.zeros(1, row.dtype)])
+        first.append(row[0])
+        prev2, prev1 = prev1, row
+    return jnp.stack(first)
 
 
 def routh_hurwitz_stable(model: TowModel, y: Float[Array, "6"]) -> Bool[Array, ""]:
     """Routh-Hurwitz criterion: all roots in the open left half-plane (binary answer)."""
-    c = characteristic_polynomial(jacobian(model, y))
-    return jnp.all(c > 0) & jnp.all(hurwitz_determinants(c) > 0)
+    col = routh_first_column(characteristic_polynomial(jacobian(model, y)))
+    return jnp.all(col > 0)
 
 
 class StabilityResult(dict):

@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 import jaxtow as jt
+from jaxtow.stability import routh_first_column
 from helpers import central_derivative, model
 
 
@@ -65,3 +66,16 @@ def test_gradient_of_max_real_eigenvalue_matches_fd(barge_2a, name):
     h = 1e-6 * max(1.0, abs(theta0))
     fd = central_derivative(margin, theta0, h=h)
     assert abs(g - fd) <= 1e-5 * max(abs(fd), 1e-3), (name, g, fd)
+
+
+def _routh_stable(roots):
+    c = np.real(np.poly(roots))
+    return bool(np.all(np.asarray(routh_first_column(jnp.asarray(c))) > 0))
+
+
+def test_routh_array_on_known_polynomials():
+    assert _routh_stable([-1.0] * 6)
+    assert _routh_stable([-0.1 + 2j, -0.1 - 2j, -1, -3, -0.5 + 0.1j, -0.5 - 0.1j])
+    assert not _routh_stable([0.05 + 1j, 0.05 - 1j, -1, -2, -3, -4])  # unstable complex pair
+    assert not _routh_stable([0.2, -1, -2, -3, -4, -5])  # unstable real root
+    assert not _routh_stable([1j, -1j, -1, -2, -3, -4])  # marginal: not asymptotically stable

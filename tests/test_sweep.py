@@ -102,3 +102,23 @@ def test_sharded_sweep_identical_to_single_device():
                          text=True, timeout=600)
     assert out.returncode == 0, out.stderr[-3000:]
     assert "SHARDED_OK" in out.stdout
+
+
+_LARGE_SCRIPT = textwrap.dedent("""
+    import numpy as np, jaxtow as jt
+    m = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.presets.default_towline())
+    grid = {"xp": np.linspace(0.0, 0.6, 61), "l0": np.linspace(0.2, 2.5, 47)}
+    for method in ("numerical", "analytic", "numerical"):
+        a = jt.sweep_arrays(m, grid, method=method)
+    print("LARGE_OK", int(a["n_equilibria"].sum()))
+""")
+
+
+def test_large_batch_sweep_completes():
+    """Regression: several batched LAPACK calls in one kernel (Hurwitz determinants via
+    jnp.linalg.det) deadlocked XLA's CPU runtime on chunks of thousands of points. The
+    sweep runs in a subprocess so that a hang fails the test instead of stalling the run."""
+    out = subprocess.run([sys.executable, "-c", _LARGE_SCRIPT], capture_output=True, text=True,
+                         timeout=300, env=dict(os.environ, JAX_PLATFORMS="cpu"))
+    assert out.returncode == 0, out.stderr[-3000:]
+    assert "LARGE_OK" in out.stdout
