@@ -26,14 +26,30 @@ def jacobian(model: TowModel, y: Float[Array, "6"], t=0.0) -> Float[Array, "6 6"
     return jax.jacfwd(vector_field, argnums=1)(t, jnp.asarray(y), model)
 
 
-def eigenvalues(model: TowModel, y: Float[Array, "6"]) -> Complex[Array, "6"]:
-    """Eigenvalues of the Jacobian at y (non-dimensional, per L/U_tug)."""
-    return jnp.linalg.eigvals(jacobian(model, y))
+EIG_METHODS = ("lapack", "polynomial")
 
 
-def max_real_eigenvalue(model: TowModel, y: Float[Array, "6"]) -> Float[Array, ""]:
+def eigenvalues(model: TowModel, y: Float[Array, "6"], method: str = "lapack") -> Complex[Array, "6"]:
+    """Eigenvalues of the Jacobian at y (non-dimensional, per L/U_tug).
+
+    ``method="lapack"`` (default): `jnp.linalg.eigvals` (LAPACK geev on CPU, cuSOLVER on
+    GPU). ``method="polynomial"``: roots of the characteristic polynomial by Aberth-Ehrlich
+    iteration, pure JAX arithmetic with no library call (agrees with LAPACK to ~1e-9 on the
+    tow Jacobians; about 4x slower on CPU). Sweeps sharded over several CPU devices use it,
+    because concurrent LAPACK calls from XLA's threads into scipy's OpenBLAS deadlocked here
+    (jaxlib 0.10.2).
+    """
+    A = jacobian(model, y)
+    if method == "lapack":
+        return jnp.linalg.eigvals(A)
+    if method == "polynomial":
+        return polynomial_roots(characteristic_polynomial(A))
+    raise ValueError(f"parameter 'method' must be one of {EIG_METHODS}, got {method!r}")
+
+
+def max_real_eigenvalue(model: TowModel, y: Float[Array, "6"], method: str = "lapack") -> Float[Array, ""]:
     """max Re λ(∂f/∂y) at y: < 0 stable, > 0 unstable (thesis figs 2.6b, 6.4)."""
-    return jnp.max(jnp.real(eigenvalues(model, y)))
+    return jnp.max(jnp.real(eigenvalues(model, y, method)))
 
 
 def classify(max_re, tol: float = MARGINAL_TOL) -> Int[Array, "..."]:
@@ -52,9 +68,35 @@ def characteristic_polynomial(A: Float[Array, "n n"]) -> Float[Array, " n+1"]:
     M = jnp.zeros_like(A)
     c = [jnp.ones((), A.dtype)]
     for k in range(1, n + 1):  # n is a static shape (6): unrolled, not a grid loop
-        M = A @ M + c[-1] * eye
-        c.append(-jnp.trace(A @ M) / k)
+        # broadcast-multiply-sum instead of `@`: XLA fuses it (tiny batched dots are slow on CPU)
+        M = jnp.sum(A[:, :, None] * M[None, :, :], axis=1) + c[-1] * eye
+        c.append(-jnp.sum(A * M.T) / k)
     return jnp.stack(c)
+
+
+def polynomial_roots(coeffs, iterations: int = 60) -> Complex[Array, " n"]:
+    """All roots of c0 λⁿ + ... + cn by Aberth-Ehrlich iteration (pure JAX, vmappable).
+
+    Starts from a circle of radius 2·max|ck/c0|^(1/k) (a bound on the root moduli) and
+    runs a fixed number of iterations (cubically convergent; 60 is ample for n = 6).
+    """
+    n = coeffs.shape[0] - 1
+    c = coeffs.astype(jnp.complex128 if coeffs.dtype == jnp.float64 else jnp.complex64)
+    radius = 2 * jnp.max(jnp.abs(c[1:] / c[0]) ** (1.0 / jnp.arange(1, n + 1)))
+    z0 = radius * jnp.exp(1j * (2 * jnp.pi * jnp.arange(n) / n + 0.4))
+    off = ~jnp.eye(n, dtype=bool)
+
+    def step(_, z):
+        p, d = jnp.full_like(z, c[0]), jnp.zeros_like(z)
+        for k in range(1, n + 1):  # Horner for p and p'
+            d = d * z + p
+            p = p * z + c[k]
+        w = p / jnp.where(d == 0, 1e-300, d)
+        diff = z[:, None] - z[None, :]
+        s = jnp.sum(jnp.where(off, 1.0 / jnp.where(off, diff, 1.0), 0.0), axis=1)
+        return z - w / (1 - w * s)
+
+    return jax.lax.fori_loop(0, iterations, step, z0)
 
 
 def routh_first_column(coeffs: Float[Array, " n+1"]) -> Float[Array, " n+1"]:

@@ -35,8 +35,14 @@ SLOT_FIELDS = ("psi", "gamma", "tension", "length", "found", "converged", "taut"
 
 
 def point_kernel(model: TowModel, params: Mapping[str, jnp.ndarray], *, method: str = "numerical",
-                 n_grid: int = 2001, max_roots: int = 4, psi_range: float = math.pi / 2) -> dict:
-    """Equilibria and stability at one parameter point (pure; vmap it over points)."""
+                 n_grid: int = 2001, max_roots: int = 4, psi_range: float = math.pi / 2,
+                 routh_hurwitz: bool = True, eig_method: str = "lapack") -> dict:
+    """Equilibria and stability at one parameter point (pure; vmap it over points).
+
+    ``routh_hurwitz=False`` drops the Routh-Hurwitz cross-check (about a third of the cost
+    of the calm-water kernel) when only the eigenvalues are wanted. ``eig_method``: see
+    `jaxtow.stability.eigenvalues`.
+    """
     mdl = with_parameters(model, **params)
     if method == "analytic":
         eqs = analytic_equilibria(mdl, check=False)
@@ -46,15 +52,16 @@ def point_kernel(model: TowModel, params: Mapping[str, jnp.ndarray], *, method: 
                                       psi_range=psi_range, return_count=True, check=False)
     else:
         raise ValueError(f"parameter 'method' must be 'numerical' or 'analytic', got {method!r}")
-    lam = jax.vmap(eigenvalues, in_axes=(None, 0))(mdl, eqs.state)
+    lam = jax.vmap(eigenvalues, in_axes=(None, 0, None))(mdl, eqs.state, eig_method)
     max_re = jnp.max(jnp.real(lam), axis=-1)
     out = {f: getattr(eqs, f) for f in SLOT_FIELDS}
     out.update(
         eig_real=jnp.real(lam), eig_imag=jnp.imag(lam), max_real=max_re,
         stability=classify(max_re),
-        routh_hurwitz=jax.vmap(routh_hurwitz_stable, in_axes=(None, 0))(mdl, eqs.state),
         n_equilibria=count, truncated=count > eqs.psi.shape[0],
     )
+    if routh_hurwitz:
+        out["routh_hurwitz"] = jax.vmap(routh_hurwitz_stable, in_axes=(None, 0))(mdl, eqs.state)
     return out
 
 
@@ -82,12 +89,15 @@ def make_batched_kernel(**kernel_options):
 def sweep_arrays(model: TowModel, grid: Mapping[str, np.ndarray], *, method: str = "numerical",
                  chunk_size: int = 16384, progress: bool = False, devices=None,
                  n_grid: int = 2001, max_roots: int = 4, psi_range: float = math.pi / 2,
-                 kernel=None) -> dict:
+                 routh_hurwitz: bool = True, eig_method: str | None = None, kernel=None) -> dict:
     """Run the sweep and return NumPy arrays shaped ``grid_shape + (slots[, 6])``.
 
     ``grid`` maps parameter names to 1-D value arrays (a Cartesian product is taken).
     All values are checked before anything runs; an invalid one is an error naming it.
-    ``devices``: JAX devices to shard each chunk over (default: all).
+    ``devices``: JAX devices to shard each chunk over (default: all). ``eig_method``:
+    "lapack" or "polynomial" (`jaxtow.stability.eigenvalues`); by default "polynomial" when
+    the chunk is sharded over several CPU devices (concurrent LAPACK calls into OpenBLAS
+    deadlocked there), else "lapack".
     """
     if not grid:
         raise ValueError("parameter 'grid' must name at least one parameter")
@@ -103,6 +113,9 @@ def sweep_arrays(model: TowModel, grid: Mapping[str, np.ndarray], *, method: str
     flat = [m.ravel() for m in np.meshgrid(*axes, indexing="ij")]
     npts = flat[0].size
     mesh, ndev = _mesh(devices)
+    if eig_method is None:
+        on_cpu = mesh.devices.flat[0].platform == "cpu"
+        eig_method = "polynomial" if (ndev > 1 and on_cpu) else "lapack"
     # Round small grids up to a power of two so that sweeps of similar size share a
     # compiled kernel (padding points repeat a valid point and are discarded).
     chunk = max(ndev, min(int(chunk_size), 1 << max(npts - 1, 1).bit_length()))
@@ -110,7 +123,8 @@ def sweep_arrays(model: TowModel, grid: Mapping[str, np.ndarray], *, method: str
     nchunks = int(math.ceil(npts / chunk))
     if kernel is None:
         kernel = make_batched_kernel(method=method, n_grid=n_grid, max_roots=max_roots,
-                                     psi_range=psi_range)
+                                     psi_range=psi_range, routh_hurwitz=routh_hurwitz,
+                                     eig_method=eig_method)
     sharding = NamedSharding(mesh, P("points"))
     bar = Progress(nchunks, label="sweep", enabled=progress)
     pieces = []
@@ -125,6 +139,7 @@ def sweep_arrays(model: TowModel, grid: Mapping[str, np.ndarray], *, method: str
     out = {k: np.concatenate([p[k] for p in pieces]) for k in pieces[0]}
     out = {k: v.reshape(shape + v.shape[1:]) for k, v in out.items()}
     out["_coords"] = dict(zip(names, axes))
+    out["_eig_method"] = eig_method
     return out
 
 

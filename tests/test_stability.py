@@ -79,3 +79,17 @@ def test_routh_array_on_known_polynomials():
     assert not _routh_stable([0.05 + 1j, 0.05 - 1j, -1, -2, -3, -4])  # unstable complex pair
     assert not _routh_stable([0.2, -1, -2, -3, -4, -5])  # unstable real root
     assert not _routh_stable([1j, -1j, -1, -2, -3, -4])  # marginal: not asymptotically stable
+
+
+def test_polynomial_eigenvalues_match_lapack(barge_2a, barge_2b):
+    """The LAPACK-free eigenvalues (characteristic polynomial + Aberth) agree with LAPACK."""
+    for v in (barge_2a, barge_2b):
+        for xp, l0 in ((0.3, 0.4), (0.5, 2.5), (0.1, 1.0)):
+            m = model(v, l0=l0, xp=xp)
+            for y in jt.equilibria(m).state:
+                a = np.asarray(jt.eigenvalues(m, y))
+                b = np.asarray(jt.eigenvalues(m, y, method="polynomial"))
+                dist = np.abs(a[:, None] - b[None, :])  # match each eigenvalue to its nearest
+                assert dist.min(axis=1).max() < 1e-8 and dist.min(axis=0).max() < 1e-8
+    with pytest.raises(ValueError, match="'method'"):
+        jt.eigenvalues(m, y, method="qr")

@@ -77,6 +77,7 @@ def sweep_dataset(model, arrays: dict, *, method: str) -> xr.Dataset:
         ds[k] = (dims, v, {"units": units, "long_name": long_name})
     ds.attrs.update(model_attributes(model))
     ds.attrs["equilibrium_method"] = method
+    ds.attrs["eigenvalue_method"] = arrays.get("_eig_method", "lapack")
     ds.attrs["swept_parameters"] = ",".join(names)
     return ds
 
