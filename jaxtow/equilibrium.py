@@ -32,7 +32,7 @@ import jax.numpy as jnp
 import optimistix as optx
 from jaxtyping import Array, Bool, Float, Int
 
-from .dynamics import NoExternalForce, TowModel, vector_field
+from .dynamics import NoExternalForce, TowModel, force_breakdown, vector_field
 from ._validate import guard
 from .towline import Towline
 
@@ -101,11 +101,8 @@ def equilibrium_kinematics(psi):
 
 def hull_forces_at_heading(psi, model: TowModel):
     """Non-towline forces (X', Y', N') on the vessel moving with the tug at heading ψ."""
-    y = equilibrium_kinematics(psi)
-    u, v, r = y[0], y[1], y[2]
-    ves = model.vessel
-    coupling = jnp.stack([(ves.m + ves.a22) * v * r, -(ves.m + ves.a11) * u * r, 0 * r])
-    return ves.manoeuvring_forces(u, v, r) + coupling + model.external(0.0, y, model)
+    fb = force_breakdown(0.0, equilibrium_kinematics(psi), model)
+    return fb["manoeuvring"] + fb["coupling"] + fb["external"]
 
 
 def heading_residual(psi, model: TowModel):
