@@ -9,6 +9,7 @@ from ._config import enable_x64_from_environment as _enable_x64
 _enable_x64()
 
 from . import presets as presets
+from . import waves as waves
 from .dynamics import (
     AbstractExternalForce as AbstractExternalForce,
     ConstantBodyForce as ConstantBodyForce,

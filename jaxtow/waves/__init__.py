@@ -1,0 +1,26 @@
+"""Wave spectra and irregular seas (thesis sections 2.3, 3.1, 6.3; MODEL.md section 6).
+
+SI units and rad/s inside; helpers convert periods and Hz at the boundary.
+"""
+
+from .irregular import (
+    mean_drift as mean_drift,
+    mean_drift_damping as mean_drift_damping,
+    slow_drift_force_spectrum as slow_drift_force_spectrum,
+    synthesise_drift_force as synthesise_drift_force,
+    synthesise_elevation as synthesise_elevation,
+)
+from .spectra import (
+    AbstractSpectrum as AbstractSpectrum,
+    Jonswap as Jonswap,
+    PiersonMoskowitz as PiersonMoskowitz,
+    check_frequency_grid as check_frequency_grid,
+    hz_to_omega as hz_to_omega,
+    jonswap as jonswap,
+    period_to_omega as period_to_omega,
+    physical_tp_range as physical_tp_range,
+    pierson_moskowitz as pierson_moskowitz,
+    spectral_moment as spectral_moment,
+    spectral_periods as spectral_periods,
+    spectrum_per_hz as spectrum_per_hz,
+)
