@@ -32,11 +32,15 @@ def test_normalised_jonswap_hs_exact():
     for gamma in (1.0, 3.3, 7.0):
         S = waves.jonswap(OMEGA, hs=2.4, tp=7.0, gamma=gamma, normalise=True)
         assert 4 * np.sqrt(float(waves.spectral_moment(OMEGA, S, 0))) == pytest.approx(2.4, abs=1e-6)
-    # the thesis (unnormalised) form is close to Hs for γ = 3.3 but not for γ = 1
+    # the thesis (unnormalised) form is close to Hs for γ = 3.3, but with γ = 1 it is not
+    # Pierson-Moskowitz (4√m0 = 0.81 Hs); pierson_moskowitz is normalised analytically
     S = waves.jonswap(OMEGA, hs=2.4, tp=7.0)
     assert 4 * np.sqrt(float(waves.spectral_moment(OMEGA, S, 0))) == pytest.approx(2.4, rel=2e-3)
-    S = waves.pierson_moskowitz(OMEGA, hs=2.4, tp=7.0)
+    S = waves.jonswap(OMEGA, hs=2.4, tp=7.0, gamma=1.0)
     assert 4 * np.sqrt(float(waves.spectral_moment(OMEGA, S, 0))) == pytest.approx(2.4 * 0.81, rel=1e-2)
+    S = waves.pierson_moskowitz(OMEGA, hs=2.4, tp=7.0)
+    assert 4 * np.sqrt(float(waves.spectral_moment(OMEGA, S, 0))) == pytest.approx(2.4, rel=1e-5)
+    assert float(waves.spectral_periods(OMEGA, S)["tp"]) == pytest.approx(7.0, rel=1e-3)
 
 
 def test_spectrum_modules_match_functions_and_units():

@@ -27,7 +27,7 @@ def _positive_omega(omega):
 
 
 def _bretschneider(omega, hs, tp):
-    """320 Hs²/Tp⁴ ω⁻⁵ exp(−1950 ω⁻⁴ / Tp⁴) (Journée & Massie; thesis eq. 3.1 with γ = 1)."""
+    """320 Hs²/Tp⁴ ω⁻⁵ exp(−1950 ω⁻⁴ / Tp⁴): the base of thesis eq. 3.1 (Journée & Massie)."""
     pos, w = _positive_omega(omega)
     s = 320.0 * hs**2 / tp**4 * w**-5 * jnp.exp(-1950.0 / tp**4 * w**-4)
     return jnp.where(pos, s, 0.0)
@@ -65,9 +65,18 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
 
 
 def pierson_moskowitz(omega, *, hs, tp):
-    """Pierson-Moskowitz (Bretschneider/ITTC two-parameter) spectrum: JONSWAP with γ = 1."""
+    """Pierson-Moskowitz (Bretschneider / ITTC two-parameter) spectrum,
+    S = 5/16 Hs² ωp⁴ ω⁻⁵ exp(−5/4 (ωp/ω)⁴), so that 4√m0 = Hs exactly.
+
+    Note: the thesis form of eq. 3.1 with γ = 1 is *not* this spectrum: its constant 320
+    (= 487/1.52) already holds the JONSWAP γ = 3.3 normalisation, and with γ = 1 it gives
+    4√m0 = 0.81 Hs.
+    """
     _check_sea_state(hs, tp)
-    return _bretschneider(omega, hs, tp)
+    pos, w = _positive_omega(omega)
+    wp = 2 * jnp.pi / tp
+    s = 5.0 / 16.0 * hs**2 * wp**4 * w**-5 * jnp.exp(-1.25 * (wp / w) ** 4)
+    return jnp.where(pos, s, 0.0)
 
 
 class AbstractSpectrum(eqx.Module):
@@ -118,7 +127,7 @@ class Jonswap(AbstractSpectrum):
 
 
 class PiersonMoskowitz(AbstractSpectrum):
-    """Pierson-Moskowitz sea state (JONSWAP with γ = 1)."""
+    """Pierson-Moskowitz sea state (see `pierson_moskowitz`)."""
 
     hs: Float[Array, ""] = eqx.field(converter=jnp.asarray)
     tp: Float[Array, ""] = eqx.field(converter=jnp.asarray)
