@@ -8,6 +8,8 @@ Subcommands:
 * ``jaxtow equilibria``: the equilibria of one configuration and their eigenvalues.
 * ``jaxtow map``: any sweep over named parameters, saved as NetCDF (and a figure for 1-D
   and 2-D sweeps).
+* ``jaxtow simulate``: time-domain runs (time traces, phase portraits, force history,
+  fishtailing metrics).
 
 Run ``jaxtow SUBCOMMAND --help`` for the options.
 """
@@ -173,6 +175,40 @@ def cmd_map(args):
     print(f"{ds.sizes}: {n_unstable} unstable equilibria; wrote {out / (stem + '.nc')}")
 
 
+def cmd_simulate(args):
+    import jaxtow as jt
+    from jaxtow.metrics import fishtail_metrics, force_history, trajectory
+    from jaxtow.plotting.calm import save
+    from jaxtow.plotting.timedomain import plot_force_history, plot_phase_portraits, plot_time_traces
+    from jaxtow.simulate import initial_state, simulate
+
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    summary = {}
+    for vname in args.vessels:
+        model = _model(args, vname, _parse_sets(args.set))
+        try:
+            y0 = initial_state(model, psi0=math.radians(args.psi0), y0=args.y0)
+            sim = simulate(model, y0, t1=args.t1, n_save=args.n_save, solver=args.solver)
+        except ValueError as e:
+            raise SystemExit(f"error: {e}")
+        met = fishtail_metrics(model, sim)
+        traj = trajectory(model, sim)
+        title = (f"{model.vessel.name}: xp'={args.xp}, l0'={args.l0}, psi0={args.psi0} deg, y0'={args.y0}")
+        save(plot_time_traces(traj, title), out / f"{vname}_time_traces.png")
+        save(plot_phase_portraits(traj, title), out / f"{vname}_phase_portraits.png")
+        save(plot_force_history(force_history(model, sim), title), out / f"{vname}_forces.png")
+        np.savez(out / f"{vname}_run.npz", t=np.asarray(sim.ts), y=np.asarray(sim.ys))
+        summary[vname] = met | dict(n_steps=int(sim.n_steps), assumed_values=dict(model.assumed))
+        w = met["path_width"]
+        print(f"{vname}: {met['outcome']}; path width {w if w is None else round(w, 3)} L, "
+              f"yaw range {met['yaw_range']} deg, slewing period {met['slewing_period']}, "
+              f"damping {met['damping']['zeta']} ({met['damping']['method']})"
+              + ("; ENDED EARLY at t'=%.1f" % met["t_end"] if met["ended_early"] else ""))
+    (out / "simulate_summary.json").write_text(json.dumps(summary, indent=2, default=float))
+    print(f"wrote figures, runs and simulate_summary.json to {out}")
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="jaxtow",
@@ -200,6 +236,17 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--eigenvalues", action="store_true", help="print all eigenvalues")
     _common(e)
     e.set_defaults(func=cmd_equilibria)
+
+    s = sub.add_parser("simulate", help="time-domain run(s) from the thesis's initial condition")
+    s.add_argument("--vessels", nargs="+", default=["barge_2a", "barge_2b"], help="vessel presets")
+    s.add_argument("--psi0", type=float, default=0.0, help="initial heading [deg] (default 0)")
+    s.add_argument("--y0", type=float, default=0.3, help="initial sway offset of the CoG [L] (default 0.3)")
+    s.add_argument("--t1", type=float, default=400.0, help="run length, non-dimensional (by L/U_tug)")
+    s.add_argument("--n-save", type=int, default=4001, help="saved samples")
+    s.add_argument("--solver", default="auto", choices=("auto", "tsit5", "kvaerno5"))
+    s.add_argument("--out", default="results", help="output folder")
+    _common(s)
+    s.set_defaults(func=cmd_simulate, vessel=None)
 
     m = sub.add_parser("map", help="sweep any parameters; NetCDF + figure")
     m.add_argument("--vessel", default="barge_2a", help="vessel preset (barge_2a, barge_2b)")

@@ -60,3 +60,11 @@ def test_bad_cli_input_is_a_clear_error(argv, text, tmp_path):
     with pytest.raises(SystemExit) as e:
         main(argv)
     assert text in str(e.value)
+
+
+def test_simulate_subcommand(tmp_path, capsys):
+    main(["simulate", "--vessels", "barge_2b", "--t1", "40", "--n-save", "401", "--out", str(tmp_path)])
+    for f in ("barge_2b_time_traces.png", "barge_2b_phase_portraits.png", "barge_2b_forces.png",
+              "simulate_summary.json"):
+        assert (tmp_path / f).exists()
+    assert "barge_2b" in capsys.readouterr().out
