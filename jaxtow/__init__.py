@@ -38,6 +38,18 @@ from .stability import (
     routh_hurwitz_stable as routh_hurwitz_stable,
     stability as stability,
 )
+from .metrics import (
+    damping_ratio as damping_ratio,
+    fishtail_metrics as fishtail_metrics,
+    force_history as force_history,
+    trajectory as trajectory,
+)
+from .simulate import (
+    Simulation as Simulation,
+    initial_state as initial_state,
+    simulate as simulate,
+    simulate_batch as simulate_batch,
+)
 from .sweep import sweep as sweep, sweep_arrays as sweep_arrays
 from .towline import AbstractTowline as AbstractTowline, PowerLawTowline as PowerLawTowline, Towline as Towline
 from .units import Scales as Scales, froude_number as froude_number
