@@ -8,6 +8,7 @@ from ._config import enable_x64_from_environment as _enable_x64
 
 _enable_x64()
 
+from . import drift as drift
 from . import presets as presets
 from . import waves as waves
 from .dynamics import (
@@ -38,6 +39,7 @@ from .stability import (
     routh_hurwitz_stable as routh_hurwitz_stable,
     stability as stability,
 )
+from .drift import QTF as QTF, wave_drift_damping as wave_drift_damping
 from .metrics import (
     damping_ratio as damping_ratio,
     fishtail_metrics as fishtail_metrics,
@@ -56,3 +58,12 @@ from .units import Scales as Scales, froude_number as froude_number
 from .vessel import Vessel as Vessel
 
 __version__ = "0.1.0"
+
+
+def __getattr__(name):
+    # `jt.io` and `jt.plotting` load on first use: the numerics never import xarray/matplotlib
+    if name in ("io", "plotting"):
+        import importlib
+
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module 'jaxtow' has no attribute {name!r}")

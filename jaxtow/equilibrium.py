@@ -38,6 +38,8 @@ from .towline import Towline
 
 #: Tolerance below which |ψ| counts as straight behind the tug.
 STRAIGHT_TOL = 1e-9
+#: Headings evaluated together in the residual scan (bounds memory for costly force models).
+SCAN_BATCH = 64
 
 
 class Equilibria(eqx.Module):
@@ -180,7 +182,9 @@ def equilibria_fixed(model: TowModel, *, n_grid: int = 2001, max_roots: int = 8,
     if not 0 < psi_range <= math.pi:
         raise ValueError(f"parameter 'psi_range' must lie in (0, pi], got {psi_range}")
     grid = jnp.linspace(-psi_range, psi_range, n_grid)
-    F = jax.vmap(heading_residual, in_axes=(0, None))(grid, model)
+    # batches of headings (not one vmap over all): an expensive force model (an irregular-sea
+    # drift integral, say) would otherwise materialise n_grid copies of its intermediates
+    F = jax.lax.map(lambda p: heading_residual(p, model), grid, batch_size=SCAN_BATCH)
     exact = F[:-1] == 0
     change = exact | (F[:-1] * F[1:] < 0)
     count = jnp.sum(change)

@@ -1,3 +1,10 @@
 """File formats and labelled results (xarray / NetCDF). Numerical modules never import this."""
 
 from .dataset import load_dataset as load_dataset, save_dataset as save_dataset, sweep_dataset as sweep_dataset
+from .wamit import (
+    load_qtf as load_qtf,
+    qtf_from_capytaine as qtf_from_capytaine,
+    read_wamit_drift as read_wamit_drift,
+    save_qtf as save_qtf,
+    write_wamit_drift as write_wamit_drift,
+)
