@@ -22,10 +22,10 @@ def wave_drift_damping(q, omega, beta, *, yaw_column=None, g: float = G):
         B_i2 = (ω/g) [ ω sin β ∂F_i/∂ω + 2 cos β ∂F_i/∂β + 4 sin β F_i ]
 
     The yaw-rate column (Aranha & Martins 1997, eq. 2.42) needs the sectional first and
-    second moments of the drift force, which a QTF table does not hold: pass it as
-    ``yaw_column`` (shape (3,), per ζa², [N·s/m³, N·s/m³·m, N·m·s/m²... per rad/s]) from a
-    panel computation; the documented fallback is zero (no yaw-rate damping), which is what
-    this function returns when ``yaw_column`` is None.
+    second moments of the drift force, which a QTF table does not hold, and its published
+    form was not available to us: pass it as ``yaw_column`` (shape (3,), per ζa²: the change
+    of (Fx, Fy, Nz) per unit yaw rate) from a panel computation. The documented fallback is
+    zero (no yaw-rate wave-drift damping), returned when ``yaw_column`` is None.
     """
     omega = jnp.asarray(omega, dtype=float)
     beta = jnp.asarray(beta, dtype=float)
