@@ -3,8 +3,9 @@
 Subcommands:
 
 * ``jaxtow calm --out DIR``: the without-waves stability study of thesis section 6.1 for
-  Barge 2a and 2b (equilibria vs x_p', max Re λ vs l0', a (x_p', l0') stability map):
-  PNG figures, NetCDF datasets and a text summary in DIR.
+  Barge 2a and 2b (equilibria vs x_p', max Re λ vs l0', a (x_p', l0') stability map, and
+  time-domain runs from the thesis's initial condition, figs 6.5-6.7): PNG figures,
+  NetCDF datasets and a JSON summary in DIR.
 * ``jaxtow equilibria``: the equilibria of one configuration and their eigenvalues.
 * ``jaxtow map``: any sweep over named parameters, saved as NetCDF (and a figure for 1-D
   and 2-D sweeps).
@@ -114,7 +115,9 @@ def cmd_calm(args):
             straight_behind_max_real_range_over_l0=[float(straight.min()), float(straight.max())],
             assumed_values=dict(model.assumed),
         )
-    (out / "summary.json").write_text(json.dumps(summary, indent=2))
+        if not args.no_time_domain:
+            summary[vname]["time_domain"] = _time_domain(model, vname, args, out)
+    (out / "summary.json").write_text(json.dumps(summary, indent=2, default=float))
     for vname, s in summary.items():
         print(f"{vname}: c = {s['stability_coefficient_c']:+.4f} ({'course stable' if s['course_stable'] else 'course unstable'})")
         for p, mr, lab in zip(s["equilibria_psi_deg"], s["equilibria_max_real"], s["equilibria_stability"]):
@@ -175,38 +178,52 @@ def cmd_map(args):
     print(f"{ds.sizes}: {n_unstable} unstable equilibria; wrote {out / (stem + '.nc')}")
 
 
-def cmd_simulate(args):
-    import jaxtow as jt
+def _time_domain(model, vname, args, out: Path) -> dict:
+    """Run from the thesis's initial condition, write figures and the run; return metrics."""
     from jaxtow.metrics import fishtail_metrics, force_history, trajectory
     from jaxtow.plotting.calm import save
     from jaxtow.plotting.timedomain import plot_force_history, plot_phase_portraits, plot_time_traces
     from jaxtow.simulate import initial_state, simulate
 
+    try:
+        y0 = initial_state(model, psi0=math.radians(args.psi0), y0=args.y0)
+        sim = simulate(model, y0, t1=args.t1, n_save=args.n_save, solver=args.solver)
+    except ValueError as e:
+        raise SystemExit(f"error: {e}")
+    met = fishtail_metrics(model, sim)
+    traj = trajectory(model, sim)
+    title = (f"{model.vessel.name}: xp'={float(model.towline.xp)}, l0'={float(model.towline.l0)}, "
+             f"psi0={args.psi0} deg, y0'={args.y0}")
+    save(plot_time_traces(traj, title), out / f"{vname}_time_traces.png")
+    save(plot_phase_portraits(traj, title), out / f"{vname}_phase_portraits.png")
+    save(plot_force_history(force_history(model, sim), title), out / f"{vname}_forces.png")
+    np.savez(out / f"{vname}_run.npz", t=np.asarray(sim.ts), y=np.asarray(sim.ys))
+    w = met["path_width"]
+    print(f"{vname} time domain: {met['outcome']}; path width {w if w is None else round(w, 3)} L, "
+          f"yaw range {tuple(round(a, 2) for a in met['yaw_range']) if met['yaw_range'] else None} deg, "
+          f"slewing period {met['slewing_period'] and round(met['slewing_period'], 2)}, "
+          f"heading damping {met['damping']['zeta'] and round(met['damping']['zeta'], 4)} ({met['damping']['method']})"
+          + ("; ENDED EARLY at t'=%.1f" % met["t_end"] if met["ended_early"] else ""))
+    return met | dict(n_steps=int(sim.n_steps))
+
+
+def cmd_simulate(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     summary = {}
     for vname in args.vessels:
         model = _model(args, vname, _parse_sets(args.set))
-        try:
-            y0 = initial_state(model, psi0=math.radians(args.psi0), y0=args.y0)
-            sim = simulate(model, y0, t1=args.t1, n_save=args.n_save, solver=args.solver)
-        except ValueError as e:
-            raise SystemExit(f"error: {e}")
-        met = fishtail_metrics(model, sim)
-        traj = trajectory(model, sim)
-        title = (f"{model.vessel.name}: xp'={args.xp}, l0'={args.l0}, psi0={args.psi0} deg, y0'={args.y0}")
-        save(plot_time_traces(traj, title), out / f"{vname}_time_traces.png")
-        save(plot_phase_portraits(traj, title), out / f"{vname}_phase_portraits.png")
-        save(plot_force_history(force_history(model, sim), title), out / f"{vname}_forces.png")
-        np.savez(out / f"{vname}_run.npz", t=np.asarray(sim.ts), y=np.asarray(sim.ys))
-        summary[vname] = met | dict(n_steps=int(sim.n_steps), assumed_values=dict(model.assumed))
-        w = met["path_width"]
-        print(f"{vname}: {met['outcome']}; path width {w if w is None else round(w, 3)} L, "
-              f"yaw range {met['yaw_range']} deg, slewing period {met['slewing_period']}, "
-              f"damping {met['damping']['zeta']} ({met['damping']['method']})"
-              + ("; ENDED EARLY at t'=%.1f" % met["t_end"] if met["ended_early"] else ""))
+        summary[vname] = _time_domain(model, vname, args, out) | dict(assumed_values=dict(model.assumed))
     (out / "simulate_summary.json").write_text(json.dumps(summary, indent=2, default=float))
     print(f"wrote figures, runs and simulate_summary.json to {out}")
+
+
+def _time_domain_options(p, t1_default=400.0):
+    p.add_argument("--psi0", type=float, default=0.0, help="initial heading [deg] (default 0)")
+    p.add_argument("--y0", type=float, default=0.3, help="initial sway offset of the CoG [L] (default 0.3)")
+    p.add_argument("--t1", type=float, default=t1_default, help="run length, non-dimensional (by L/U_tug)")
+    p.add_argument("--n-save", type=int, default=4001, help="saved samples")
+    p.add_argument("--solver", default="auto", choices=("auto", "tsit5", "kvaerno5"))
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -228,6 +245,9 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--map-l0", nargs=3, default=(0.2, 2.5, 47), metavar=("LO", "HI", "N"))
     c.add_argument("--chunk-size", type=int, default=16384, help="points per vmapped chunk")
     c.add_argument("--quiet", action="store_true", help="no progress bar")
+    c.add_argument("--no-time-domain", action="store_true",
+                   help="skip the runs from the thesis's initial condition (figs 6.5-6.7)")
+    _time_domain_options(c)
     _common(c)
     c.set_defaults(func=cmd_calm, vessel=None)
 
@@ -239,11 +259,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser("simulate", help="time-domain run(s) from the thesis's initial condition")
     s.add_argument("--vessels", nargs="+", default=["barge_2a", "barge_2b"], help="vessel presets")
-    s.add_argument("--psi0", type=float, default=0.0, help="initial heading [deg] (default 0)")
-    s.add_argument("--y0", type=float, default=0.3, help="initial sway offset of the CoG [L] (default 0.3)")
-    s.add_argument("--t1", type=float, default=400.0, help="run length, non-dimensional (by L/U_tug)")
-    s.add_argument("--n-save", type=int, default=4001, help="saved samples")
-    s.add_argument("--solver", default="auto", choices=("auto", "tsit5", "kvaerno5"))
+    _time_domain_options(s)
     s.add_argument("--out", default="results", help="output folder")
     _common(s)
     s.set_defaults(func=cmd_simulate, vessel=None)

@@ -20,12 +20,14 @@ def test_help_lists_subcommands(capsys):
 def test_calm_writes_figures_datasets_summary(tmp_path, capsys):
     out = tmp_path / "res"
     main(["calm", "--out", str(out), "--quiet", "--xp-grid", "0", "0.6", "13", "--l0-grid", "0.2", "2.5", "6",
-          "--map-xp", "0", "0.6", "4", "--map-l0", "0.2", "2.5", "3"])
+          "--map-xp", "0", "0.6", "4", "--map-l0", "0.2", "2.5", "3", "--t1", "30", "--n-save", "301"])
     names = {p.name for p in out.iterdir()}
     for v in ("barge_2a", "barge_2b"):
         for stem in ("equilibria_vs_xp", "max_real_vs_l0", "map_xp_l0"):
             assert f"{v}_{stem}.png" in names and f"{v}_{stem}.nc" in names
+    assert "barge_2a_time_traces.png" in names and "barge_2b_phase_portraits.png" in names
     summary = json.loads((out / "summary.json").read_text())
+    assert summary["barge_2b"]["time_domain"]["ended_early"] is False
     assert summary["barge_2a"]["equilibria_stability"] == ["unstable"]
     assert summary["barge_2b"]["equilibria_stability"] == ["unstable", "stable", "unstable"]
     ds = load_dataset(out / "barge_2b_max_real_vs_l0.nc")
