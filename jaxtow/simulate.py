@@ -22,7 +22,7 @@ import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
 from .dynamics import TowModel, vector_field
-from .parameters import with_parameters
+from .parameters import check_values, with_parameters
 
 SOLVERS = ("tsit5", "kvaerno5")
 #: |λ|max · (t1 − t0) above which ``solver="auto"`` chooses the implicit solver.
@@ -124,8 +124,6 @@ def simulate_batch(model: TowModel, y0s, t1: float = 200.0, *, params: dict | No
     for k, v in params.items():
         if v.shape != (y0s.shape[0],):
             raise ValueError(f"params[{k!r}] must have shape ({y0s.shape[0]},), got {v.shape}")
-        from .parameters import check_values
-
         check_values(model, k, np.asarray(v))
     ts = _save_grid(t0, t1, n_save)
     return _batch_jit(model, y0s, params, ts, solver=solver, rtol=rtol, atol=atol,

@@ -39,7 +39,11 @@ def eigenvalues(model: TowModel, y: Float[Array, "6"], method: str = "lapack") -
     because concurrent LAPACK calls from XLA's threads into scipy's OpenBLAS deadlocked here
     (jaxlib 0.10.2).
     """
-    A = jacobian(model, y)
+    return matrix_eigenvalues(jacobian(model, y), method)
+
+
+def matrix_eigenvalues(A: Float[Array, "n n"], method: str = "lapack") -> Complex[Array, " n"]:
+    """Eigenvalues of a given matrix by ``method`` (see `eigenvalues`)."""
     if method == "lapack":
         return jnp.linalg.eigvals(A)
     if method == "polynomial":
@@ -124,8 +128,12 @@ def routh_first_column(coeffs: Float[Array, " n+1"]) -> Float[Array, " n+1"]:
 
 def routh_hurwitz_stable(model: TowModel, y: Float[Array, "6"]) -> Bool[Array, ""]:
     """Routh-Hurwitz criterion: all roots in the open left half-plane (binary answer)."""
-    col = routh_first_column(characteristic_polynomial(jacobian(model, y)))
-    return jnp.all(col > 0)
+    return matrix_routh_hurwitz_stable(jacobian(model, y))
+
+
+def matrix_routh_hurwitz_stable(A: Float[Array, "n n"]) -> Bool[Array, ""]:
+    """Routh-Hurwitz verdict for a given matrix (see `routh_hurwitz_stable`)."""
+    return jnp.all(routh_first_column(characteristic_polynomial(A)) > 0)
 
 
 class StabilityResult(dict):

@@ -27,7 +27,7 @@ from ._progress import Progress
 from .dynamics import TowModel
 from .equilibrium import analytic_equilibria, equilibria_fixed
 from .parameters import check_values, with_parameters
-from .stability import classify, eigenvalues, routh_hurwitz_stable
+from .stability import classify, jacobian, matrix_eigenvalues, matrix_routh_hurwitz_stable
 
 #: Per-slot equilibrium outputs (trailing dimension: equilibrium slot).
 SLOT_FIELDS = ("psi", "gamma", "tension", "length", "found", "converged", "taut",
@@ -52,7 +52,8 @@ def point_kernel(model: TowModel, params: Mapping[str, jnp.ndarray], *, method: 
                                       psi_range=psi_range, return_count=True, check=False)
     else:
         raise ValueError(f"parameter 'method' must be 'numerical' or 'analytic', got {method!r}")
-    lam = jax.vmap(eigenvalues, in_axes=(None, 0, None))(mdl, eqs.state, eig_method)
+    J = jax.vmap(jacobian, in_axes=(None, 0))(mdl, eqs.state)  # once, for both verdicts
+    lam = jax.vmap(lambda A: matrix_eigenvalues(A, eig_method))(J)
     max_re = jnp.max(jnp.real(lam), axis=-1)
     out = {f: getattr(eqs, f) for f in SLOT_FIELDS}
     out.update(
@@ -61,7 +62,7 @@ def point_kernel(model: TowModel, params: Mapping[str, jnp.ndarray], *, method: 
         n_equilibria=count, truncated=count > eqs.psi.shape[0],
     )
     if routh_hurwitz:
-        out["routh_hurwitz"] = jax.vmap(routh_hurwitz_stable, in_axes=(None, 0))(mdl, eqs.state)
+        out["routh_hurwitz"] = jax.vmap(matrix_routh_hurwitz_stable)(J)
     return out
 
 
