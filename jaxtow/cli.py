@@ -9,6 +9,8 @@ Subcommands:
 * ``jaxtow equilibria``: the equilibria of one configuration and their eigenvalues.
 * ``jaxtow map``: any sweep over named parameters, saved as NetCDF (and a figure for 1-D
   and 2-D sweeps).
+* ``jaxtow drift``: the waterline drift methods compared (thesis chapters 4-5, figs
+  4.3-4.6, 5.6-5.7) for Barge 1, Barge 2 or a waterline file, with relative MSE per zone.
 * ``jaxtow simulate``: time-domain runs (time traces, phase portraits, force history,
   fishtailing metrics).
 
@@ -276,6 +278,10 @@ def build_parser() -> argparse.ArgumentParser:
     m.add_argument("--quiet", action="store_true", help="no progress bar")
     _common(m)
     m.set_defaults(func=cmd_map)
+
+    from ._cli_drift import add_parser as add_drift
+
+    add_drift(sub)
     return p
 
 

@@ -27,6 +27,12 @@ these presets carries the list in ``Vessel.assumed`` and every dataset in its at
   of this size. EA' = EA / (½ρTLU_tug²), i.e. about 333 at U_tug = 2 m/s. The elastic
   catenary of a long wire makes the effective stiffness lower; users model that by lowering
   EA'.
+* Bow and stern rake of Barge 2 (for the waterline methods and hull meshes): the text
+  describes a raked barge without dimensions. jaxtow takes a plan-rectangular waterline
+  76.2 m × 24.4 m with a straight rake at each end that runs from the waterline down to the
+  keel over a horizontal distance a. Its volume loss is a·B·T, so C_B = 1 − a/L; matching
+  C_B = 0.928 from the published m' gives a = 5.49 m, a rake at 42.3° to the horizontal,
+  i.e. a waterline flare η = 47.7° at the bow and stern faces (`barge2_rake`).
 """
 
 from __future__ import annotations
@@ -53,6 +59,9 @@ ASSUMPTIONS = {
                     note="Clarke, Gedling & Hine (1983) regressions with C_B from m' and T = 5.0 m; estimate"),
     "EA": dict(value=2.6e8, units="N",
                note="76 mm 6-strand IWRC steel wire, EA = 1.0e11 Pa x 2.63e-3 m^2; estimate"),
+    "rake": dict(value=None, units="m",
+                 note="Barge 2 bow/stern rake from waterline to keel over a = (1 - C_B) L = 5.49 m "
+                      "(C_B = 0.928 from m'); geometry estimate, not from the thesis"),
 }
 
 # Published values, thesis Table 3.7 (Hong et al. [37], Nam et al. [51]).
@@ -89,6 +98,17 @@ def clarke_added_mass(m_nd: float, length: float, breadth: float, draft: float,
     yvdot = math.pi * t_l**2 * (1.0 + 0.16 * cb * b_t - 5.1 * b_l**2)  # by ½ρL³
     nrdot = math.pi * t_l**2 * (1.0 / 12.0 + 0.017 * cb * b_t - 0.33 * b_l)  # by ½ρL⁵
     return dict(a11=a11_fraction * m_nd, a22=yvdot / t_l, a66=nrdot / t_l)
+
+
+def barge2_rake(draft: float | None = None) -> dict:
+    """Rake geometry of Barge 2 (see the module docstring): horizontal extent ``a`` [m] of
+    each end rake below the waterline, its angle to the horizontal and the waterline flare
+    η (angle of the raked face from the vertical) [rad]."""
+    T = ASSUMPTIONS["draft"]["value"] if draft is None else float(draft)
+    cb = block_coefficient_from_mass(_TABLE_3_7["2a"]["m"], BARGE2_LENGTH, BARGE2_BREADTH)
+    a = (1.0 - cb) * BARGE2_LENGTH
+    angle = math.atan2(T, a)
+    return dict(extent=a, angle=angle, flare=0.5 * math.pi - angle, draft=T, block_coefficient=cb)
 
 
 def _barge2(version: str, draft: float | None) -> Vessel:

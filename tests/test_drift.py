@@ -100,7 +100,11 @@ def test_partial_table_flags_heading():
 def test_encounter_frequency():
     assert float(encounter_frequency(1.0, 0.0, 2.0)) == pytest.approx(1.0 + 2.0 / G)
     assert float(encounter_frequency(1.0, math.pi, 2.0)) == pytest.approx(1.0 - 2.0 / G)
-    assert float(encounter_frequency(1.0, math.pi / 2, 0.0, v=1.0)) == pytest.approx(1.0 - 1.0 / G)
+    # swaying towards waves from port (travelling along -y) raises the encounter frequency
+    assert float(encounter_frequency(1.0, math.pi / 2, 0.0, v=1.0)) == pytest.approx(1.0 + 1.0 / G)
+    # tow model: beta = -psi, (u, v) = (cos psi, -sin psi): waves from ahead of the tug, any heading
+    for psi in (0.0, 0.3, -1.1):
+        assert float(encounter_frequency(0.7, -psi, 2 * math.cos(psi), 2 * -math.sin(psi))) == pytest.approx(0.7 + 0.49 * 2 / G)
 
 
 def test_wamit_fixture_reads_back(tmp_path):

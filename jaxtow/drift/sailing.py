@@ -9,9 +9,18 @@ from .damping import wave_drift_damping
 
 
 def encounter_frequency(omega0, beta, u, v=0.0, *, g: float = G):
-    """ω_e = ω0 + (ω0²/g)(u cos β − v sin β) (eq. 2.35); head seas (β = 0) with u > 0 raise it."""
+    """Encounter frequency ω_e = ω0 − k0 k̂·U = ω0 + (ω0²/g)(u cos β + v sin β) (eqs 2.35, 2.36).
+
+    jaxtow's β is the direction the waves come *from*, counter-clockwise from the bow, so
+    they travel along k̂ = (−cos β, −sin β) in body axes (the same convention as the QTF,
+    Aranha's damping in `wave_drift_damping`, the waterline methods and the WAMIT reader).
+    Head seas (β = 0) with u > 0 raise ω_e; so does swaying towards waves from port
+    (β = π/2, v > 0). The thesis prints eq. 2.35 with ``− v sin β``, i.e. with β measured the
+    other way round; with jaxtow's convention and the tow model's β = −ψ this form makes ω_e
+    independent of the barge heading, as it must be for waves from ahead of the tug.
+    """
     omega0 = jnp.asarray(omega0)
-    return omega0 + omega0**2 / g * (u * jnp.cos(beta) - v * jnp.sin(beta))
+    return omega0 + omega0**2 / g * (u * jnp.cos(beta) + v * jnp.sin(beta))
 
 
 def sailing_drift(q, omega0, beta, u, v=0.0, r=0.0, *, yaw_column=None, g: float = G):

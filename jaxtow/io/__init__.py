@@ -1,6 +1,7 @@
 """File formats and labelled results (xarray / NetCDF). Numerical modules never import this."""
 
 from .dataset import load_dataset as load_dataset, save_dataset as save_dataset, sweep_dataset as sweep_dataset
+from .drift_methods import drift_methods_dataset as drift_methods_dataset
 from .wamit import (
     load_qtf as load_qtf,
     qtf_from_capytaine as qtf_from_capytaine,
