@@ -11,6 +11,8 @@ Subcommands:
   and 2-D sweeps).
 * ``jaxtow drift``: the waterline drift methods compared (thesis chapters 4-5, figs
   4.3-4.6, 5.6-5.7) for Barge 1, Barge 2 or a waterline file, with relative MSE per zone.
+* ``jaxtow bifurcation``: equilibrium branches in one parameter with pitchfork, fold and
+  Hopf points (first Lyapunov coefficient) and limit cycles (path width, Floquet multipliers).
 * ``jaxtow simulate``: time-domain runs (time traces, phase portraits, force history,
   fishtailing metrics).
 
@@ -282,6 +284,9 @@ def build_parser() -> argparse.ArgumentParser:
     from ._cli_drift import add_parser as add_drift
 
     add_drift(sub)
+    from ._cli_bifurcation import add_parser as add_bifurcation
+
+    add_bifurcation(sub)
     return p
 
 
