@@ -31,7 +31,7 @@ step where a test function changes sign (each trial point corrected back onto th
 symmetry) the Hopf condition Δ₅(p₁, p₂) = 0 is one equation in two parameters, followed
 with the same continuation. **Limit cycles**: single shooting through diffrax with forward-
 mode sensitivities (period T and initial state, phase condition ψ(0) = 0), Newton to
-1e-10; Floquet multipliers are the eigenvalues of the monodromy matrix; path width and yaw
+1e-8 (the integration tolerances, rtol 1e-10, limit it near Hopf points); Floquet multipliers are the eigenvalues of the monodromy matrix; path width and yaw
 range are measured on the converged orbit.
 """
 
@@ -60,23 +60,24 @@ def _setter(parameter) -> Callable:
     return lambda model, p: with_parameters(model, **{parameter: p})
 
 
-def hurwitz_determinants(coeffs):
-    """Leading principal minors Δ_1 … Δ_n of the Hurwitz matrix of the monic polynomial
-    λⁿ + a₁λⁿ⁻¹ + … + a_n (``coeffs`` = (1, a₁, …, a_n)); all > 0 ⇔ every root has Re < 0."""
-    a = jnp.asarray(coeffs)
+def _hurwitz_matrix(a):
+    """Hurwitz matrix H_ij = a_{2j−i} (1-based, a_0 = 1, zero outside 0…n) of λⁿ + a₁λⁿ⁻¹ + … + a_n."""
     n = a.shape[0] - 1
     idx = 2 * jnp.arange(1, n + 1)[None, :] - jnp.arange(1, n + 1)[:, None]
-    H = jnp.where((idx >= 0) & (idx <= n), a[jnp.clip(idx, 0, n)], 0.0)
-    return jnp.stack([jnp.linalg.det(H[:k, :k]) for k in range(1, n + 1)])
+    return jnp.where((idx >= 0) & (idx <= n), a[jnp.clip(idx, 0, n)], 0.0)
+
+
+def hurwitz_determinants(coeffs):
+    """Leading principal minors Δ_1 … Δ_n of the Hurwitz matrix of the monic polynomial
+    (``coeffs`` = (1, a₁, …, a_n)); all > 0 ⇔ every root has Re < 0."""
+    H = _hurwitz_matrix(jnp.asarray(coeffs))
+    return jnp.stack([jnp.linalg.det(H[:k, :k]) for k in range(1, H.shape[0] + 1)])
 
 
 def hopf_test(A):
     """Δ_{n−1}, the Hopf test function of a real n×n matrix (zero when a pair λ = ±iω or ±μ)."""
-    a = characteristic_polynomial(A)
-    n = a.shape[0] - 1
-    idx = 2 * jnp.arange(1, n)[None, :] - jnp.arange(1, n)[:, None]
-    H = jnp.where((idx >= 0) & (idx <= n), a[jnp.clip(idx, 0, n)], 0.0)
-    return jnp.linalg.det(H)
+    H = _hurwitz_matrix(characteristic_polynomial(A))
+    return jnp.linalg.det(H[:-1, :-1])
 
 
 # ------------------------------------------------------------------ generic curve following

@@ -162,3 +162,11 @@ def test_cli_bifurcation(tmp_path):
     hopf = sorted(p["parameter"] for p in s["special_points"] if p["kind"] == "hopf")
     assert len(hopf) == 2 and hopf[0] == pytest.approx(0.2560, abs=1e-4)
     assert (tmp_path / "bifurcation_barge_2b_xp.png").stat().st_size > 10_000
+
+
+def test_hurwitz_determinants_know_stability():
+    # (λ+1)(λ+2)(λ+3): all minors positive; λ³ + λ (roots 0, ±i): Δ₂ = 0 (the Hopf test)
+    d = np.asarray(ct.hurwitz_determinants(jnp.array([1.0, 6.0, 11.0, 6.0])))
+    assert np.all(d > 0)
+    A = jnp.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -2.0]])  # eigenvalues ±i, -2
+    assert abs(float(ct.hopf_test(A))) < 1e-12
