@@ -129,6 +129,7 @@ def test_lyapunov_coefficient_of_the_normal_form():
         assert ct.lyapunov_coefficient(f, jnp.zeros(2)) == pytest.approx(a, rel=1e-12)
 
 
+@pytest.mark.slow  # 12 s of compile; kept out of the default run for CI time
 def test_hopf_curve_passes_through_the_one_parameter_hopf_point(barge_2b):
     m = model(barge_2b, l0=0.5, xp=0.3)
     h = ct.straight_behind_hopf(m, "xp", (0.2, 0.3))

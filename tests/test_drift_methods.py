@@ -188,7 +188,9 @@ def test_vmap_over_all_four_inputs(barge2):
         np.testing.assert_allclose(np.asarray(batched), loop, rtol=1e-13, atol=1e-9)
 
 
-@pytest.mark.parametrize("name", ["faltinsen", "liu", "fujii_takahashi", "kuroda", "kashiwagi"])
+@pytest.mark.parametrize("name", ["faltinsen", "liu", "kuroda",
+                                  pytest.param("fujii_takahashi", marks=pytest.mark.slow),
+                                  pytest.param("kashiwagi", marks=pytest.mark.slow)])
 def test_gradients_match_finite_differences(name, barge2):
     fn = METHODS[name]
     x0 = dict(w=1.1, b=0.3, u=1.4, v=0.35)
