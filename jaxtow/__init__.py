@@ -52,6 +52,8 @@ from .simulate import (
     simulate as simulate,
     simulate_batch as simulate_batch,
 )
+from . import resistance as resistance
+from .resistance import operating_speed as operating_speed, required_pull as required_pull
 from .sweep import sweep as sweep, sweep_arrays as sweep_arrays
 from .towline import AbstractTowline as AbstractTowline, PowerLawTowline as PowerLawTowline, Towline as Towline
 from .units import Scales as Scales, froude_number as froude_number

@@ -287,6 +287,9 @@ def build_parser() -> argparse.ArgumentParser:
     from ._cli_bifurcation import add_parser as add_bifurcation
 
     add_bifurcation(sub)
+    from ._cli_resistance import add_parser as add_resistance
+
+    add_resistance(sub)
     return p
 
 

@@ -62,7 +62,42 @@ ASSUMPTIONS = {
     "rake": dict(value=None, units="m",
                  note="Barge 2 bow/stern rake from waterline to keel over a = (1 - C_B) L = 5.49 m "
                       "(C_B = 0.928 from m'); geometry estimate, not from the thesis"),
+    "wind_table": dict(value=None, units="-",
+                       note="ILLUSTRATIVE Barge 2 wind coefficients (BARGE2_WIND_TABLE): OCIMF-form curve "
+                            "shapes with values chosen by jaxtow; not measured, not the thesis's "
+                            "(unpublished) Smit Barge 2 table"),
+    "wind_height": dict(value=10.0, units="m",
+                        note="ILLUSTRATIVE above-water height of Barge 2 with deck cargo (about 1.1 m "
+                             "freeboard + 9 m cargo); the thesis's 'arbitrary deck load' is not given"),
 }
+
+#: ILLUSTRATIVE wind-load coefficients of Barge 2 with box-shaped deck cargo (OCIMF form,
+#: eqs 2.25-2.27, on B·H, L·H, L²·H), against the relative wind angle it comes from (deg,
+#: 0 = head wind, counter-clockwise; port-starboard symmetric). The curve shapes follow the
+#: published OCIMF / Blendermann (1994) pattern for box-like superstructures (C_x ≈ −0.8 head
+#: wind, +0.7 stern wind; C_y ≈ −0.9 beam wind; a small C_n turning the bow away from the
+#: wind). The numbers are jaxtow's choice, NOT measured and NOT the thesis's table (its
+#: Smit Barge 2 coefficients are unpublished). Replace them with model-test data.
+BARGE2_WIND_TABLE = dict(
+    angle_deg=[0, 15, 30, 45, 60, 75, 90, 105, 120, 135, 150, 165, 180],
+    cx=[-0.80, -0.78, -0.70, -0.57, -0.40, -0.20, 0.00, 0.18, 0.35, 0.50, 0.61, 0.68, 0.70],
+    cy=[0.0, -0.25, -0.48, -0.68, -0.82, -0.90, -0.92, -0.90, -0.82, -0.68, -0.48, -0.25, 0.0],
+    cn=[0.0, -0.04, -0.07, -0.08, -0.07, -0.04, 0.0, 0.04, 0.07, 0.08, 0.07, 0.04, 0.0],
+)
+
+#: Thesis sea states (section 3.1, Table A.1): 1 = survival/stationary, 2 = sailing. Table
+#: A.1's period T is taken as the JONSWAP peak period; the current is zero (a current is a
+#: change of the relative speed).
+SEA_STATES = {
+    "survival": dict(hs=5.0, tp=10.5, wind_speed=20.0, current_speed=0.0),
+    "sailing": dict(hs=2.4, tp=8.2, wind_speed=10.0, current_speed=0.0),
+}
+
+#: ILLUSTRATIVE ocean tug for the Barge 2 examples (quadratic pull curve): 40 t bollard
+#: pull, pull vanishing at 7 m/s (13.6 kn), offshore towing efficiency 0.75 (the usual
+#: industry factor). Not from the thesis (its tug is not specified).
+ILLUSTRATIVE_TUG = dict(bollard_pull=40.0 * 9.80665e3, free_speed=7.0, efficiency=0.75,
+                        resistance_coefficient=0.0)
 
 # Published values, thesis Table 3.7 (Hong et al. [37], Nam et al. [51]).
 _TABLE_3_7 = {

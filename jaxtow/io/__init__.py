@@ -9,3 +9,4 @@ from .wamit import (
     save_qtf as save_qtf,
     write_wamit_drift as write_wamit_drift,
 )
+from .resistance import resistance_dataset as resistance_dataset

@@ -1,0 +1,48 @@
+"""Labelled tow-resistance budgets (xarray / NetCDF), thesis figs 7.2-7.4."""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from ..resistance import COMPONENTS, Budget
+
+
+def resistance_dataset(budget: Budget, speeds, tps, *, tow=None, sea=None, attrs: dict | None = None) -> xr.Dataset:
+    """Dataset over (speed, tp, component) from a `jaxtow.resistance.resistance_grid` budget:
+    ``resistance`` [N] per component along the course, ``total`` [N], ``share`` [%],
+    ``froude`` and the body-axis loads ``fx``, ``fy`` [N], ``nz`` [N m]. The tow's
+    assumptions (illustrative tables, estimates) go into the attributes."""
+    speeds, tps = np.asarray(speeds, float), np.asarray(tps, float)
+    r = np.asarray(budget.resistance)
+    body = np.asarray(budget.body)
+    total = r.sum(-1)
+    dims = ("speed", "tp", "component")
+    data = {
+        "resistance": (dims, r, {"units": "N", "long_name": "resistance along the course"}),
+        "total": (dims[:2], total, {"units": "N", "long_name": "total tow resistance"}),
+        "share": (dims, 100.0 * r / total[..., None], {"units": "%", "long_name": "share of the total"}),
+        "froude": (("speed",), np.asarray(budget.froude)[:, 0], {"long_name": "Fn = U/sqrt(gL)"}),
+        "froude_ok": (("speed",), np.asarray(budget.froude)[:, 0] < 0.15, {"long_name": "Fn < 0.15"}),
+    }
+    for i, (c, u) in enumerate((("fx", "N"), ("fy", "N"), ("nz", "N m"))):
+        data[c] = (dims, body[..., i], {"units": u, "long_name": f"body-axis load {c}"})
+    a = {}
+    if tow is not None:
+        a["tow"] = tow.name
+        a["length"] = float(tow.length)
+        for k, note in tow.assumed:
+            a[f"assumed_{k}"] = note
+        if tow.waves is not None:
+            a["wave_drift_method"] = tow.waves.method
+        if tow.wind is not None:
+            a["wind_coefficients"] = tow.wind.coefficients.label
+    if sea is not None:
+        for k in ("hs", "gamma", "wind_speed", "current_speed", "wave_angle", "wind_angle", "current_angle"):
+            a[k] = float(getattr(sea, k))
+        a["sea_state"] = sea.name
+    a["convention"] = ("angles: direction the wind/current/waves come from, counter-clockwise from the course, "
+                       "0 = from ahead; resistance = minus the along-course force")
+    a.update(attrs or {})
+    return xr.Dataset(data, coords={"speed": ("speed", speeds, {"units": "m/s"}), "tp": ("tp", tps, {"units": "s"}),
+                                    "component": list(COMPONENTS)}, attrs=a)
