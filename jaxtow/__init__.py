@@ -52,10 +52,16 @@ from .simulate import (
     simulate as simulate,
     simulate_batch as simulate_batch,
 )
+from . import design as design
 from . import resistance as resistance
 from .resistance import operating_speed as operating_speed, required_pull as required_pull
 from .sweep import sweep as sweep, sweep_arrays as sweep_arrays
-from .towline import AbstractTowline as AbstractTowline, PowerLawTowline as PowerLawTowline, Towline as Towline
+from .towline import (
+    AbstractTowline as AbstractTowline,
+    Bridle as Bridle,
+    PowerLawTowline as PowerLawTowline,
+    Towline as Towline,
+)
 from .units import Scales as Scales, froude_number as froude_number
 from .vessel import Vessel as Vessel
 

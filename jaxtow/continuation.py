@@ -507,7 +507,7 @@ def periodic_orbit(model: TowModel, y0, period, *, tol: float = 1e-8, max_iterat
         raise RuntimeError("periodic_orbit: shooting collapsed onto an equilibrium (no oscillation)")
     M = np.asarray(jax.jacfwd(lambda y: _flow(model, y, T)[-1])(y0))
     ys = np.asarray(_flow(model, y0, T, n_save=n_save))
-    off = np.asarray(sway_offset(jnp.asarray(ys), model.towline.xp))
+    off = np.asarray(sway_offset(jnp.asarray(ys), model.towline.xp, model.towline.yp))
     return PeriodicOrbit(parameter=float("nan"), y0=np.asarray(y0), period=T, floquet=np.linalg.eigvals(M),
                          ts=np.linspace(0.0, T, n_save), ys=ys, path_width=float(off.max() - off.min()),
                          yaw_range=float(np.abs(ys[:, 5]).max()), residual=res)

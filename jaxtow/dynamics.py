@@ -5,6 +5,14 @@ the CoG), towline length, towline angle to the tug's track, heading. The tug mov
 non-dimensional speed along the earth x-axis and does not deviate (thesis assumption).
 The bow-hawser point H lies at (−l cos γ, +l sin γ) relative to the tug, the CoG at
 H − x_p (cos ψ, sin ψ); the towline pulls H toward the tug.
+
+Transverse attachment offset (bridle studies, thesis section 8.4): with H at body
+coordinates (x_p', y_p') (y to port) the towline force F = T'(cos(γ+ψ), −sin(γ+ψ)) in body
+axes has the moment N = x_p' F_y − y_p' F_x = −T'(x_p' sin(γ+ψ) + y_p' cos(γ+ψ)), and H moves
+with the body velocity (u' − r' y_p', v' + r' x_p'), which replaces (u', v' + r' x_p') in the
+towline kinematics (eqs 6.4-6.5): l̇' gains + r' y_p' cos(γ+ψ) and γ̇ gains
+− r' y_p' sin(γ+ψ)/l'. The CoG lies at H − x_p'(cos ψ, sin ψ) − y_p'(−sin ψ, cos ψ). With
+y_p' = 0 every expression is the thesis's (the added terms are exactly zero).
 """
 
 from __future__ import annotations
@@ -107,7 +115,8 @@ def force_breakdown(t, y, model: TowModel) -> dict:
     ves = model.vessel
     T = model.towline.tension(l)
     a = gamma + psi
-    towline = jnp.stack([T * jnp.cos(a), -T * jnp.sin(a), -T * model.towline.xp * jnp.sin(a)])
+    xp, yp = model.towline.xp, model.towline.yp
+    towline = jnp.stack([T * jnp.cos(a), -T * jnp.sin(a), -T * (xp * jnp.sin(a) + yp * jnp.cos(a))])
     coupling = jnp.stack([(ves.m + ves.a22) * v * r, -(ves.m + ves.a11) * u * r, jnp.zeros_like(r)])
     return dict(
         manoeuvring=ves.manoeuvring_forces(u, v, r),
@@ -119,12 +128,13 @@ def force_breakdown(t, y, model: TowModel) -> dict:
     )
 
 
-def kinematics(y, xp) -> Float[Array, "3"]:
-    """Towline kinematics (l̇', γ̇, ψ̇), thesis eqs 6.4-6.6 (MODEL.md section 2)."""
+def kinematics(y, xp, yp=0.0) -> Float[Array, "3"]:
+    """Towline kinematics (l̇', γ̇, ψ̇), thesis eqs 6.4-6.6 (MODEL.md section 2), with the
+    transverse offset y_p' of the module docstring."""
     u, v, r, l, gamma, psi = (y[i] for i in range(6))
     a = gamma + psi
-    ldot = -u * jnp.cos(a) + v * jnp.sin(a) + jnp.cos(gamma) + r * xp * jnp.sin(a)
-    gdot = (u * jnp.sin(a) + v * jnp.cos(a) - jnp.sin(gamma) + r * xp * jnp.cos(a)) / l
+    ldot = -u * jnp.cos(a) + v * jnp.sin(a) + jnp.cos(gamma) + r * xp * jnp.sin(a) + r * yp * jnp.cos(a)
+    gdot = (u * jnp.sin(a) + v * jnp.cos(a) - jnp.sin(gamma) + r * xp * jnp.cos(a) - r * yp * jnp.sin(a)) / l
     return jnp.stack([ldot, gdot, r])
 
 
@@ -133,10 +143,11 @@ def vector_field(t, y: Float[Array, "6"], model: TowModel) -> Float[Array, "6"]:
     y = jnp.asarray(y)
     fb = force_breakdown(t, y, model)
     total = fb["manoeuvring"] + fb["towline"] + fb["coupling"] + fb["external"]
-    return jnp.concatenate([total / fb["inertia"], kinematics(y, model.towline.xp)])
+    return jnp.concatenate([total / fb["inertia"], kinematics(y, model.towline.xp, model.towline.yp)])
 
 
-def sway_offset(y, xp):
+def sway_offset(y, xp, yp=0.0):
     """Sway offset of the CoG from the tug's track, y' = l' sin γ − x_p' sin ψ (eqs 2.16,
-    2.18); the fishtailing path width is its peak-to-peak value."""
-    return y[..., 3] * jnp.sin(y[..., 4]) - xp * jnp.sin(y[..., 5])
+    2.18; − y_p' cos ψ with a transverse attachment offset); the fishtailing path width is
+    its peak-to-peak value."""
+    return y[..., 3] * jnp.sin(y[..., 4]) - xp * jnp.sin(y[..., 5]) - yp * jnp.cos(y[..., 5])

@@ -33,6 +33,7 @@ import optimistix as optx
 from jaxtyping import Array, Bool, Float, Int
 
 from .dynamics import NoExternalForce, TowModel, force_breakdown, vector_field
+from . import _validate as V
 from ._validate import guard
 from .towline import Towline
 
@@ -108,9 +109,11 @@ def hull_forces_at_heading(psi, model: TowModel):
 
 
 def heading_residual(psi, model: TowModel):
-    """F(ψ) = N(ψ) − x_p' Y(ψ) (MODEL.md section 4; thesis eqs 6.17-6.23)."""
+    """F(ψ) = N(ψ) − x_p' Y(ψ) (MODEL.md section 4; thesis eqs 6.17-6.23), + y_p' X(ψ) for
+    a transverse attachment offset (the towline moment −T'(x_p' sin a + y_p' cos a) with
+    T' sin a = Y, T' cos a = −X; see `jaxtow.dynamics`)."""
     X, Y, N = hull_forces_at_heading(psi, model)
-    return N - model.towline.xp * Y
+    return N - model.towline.xp * Y + model.towline.yp * X
 
 
 def _state_from_heading(psi, model: TowModel):
@@ -230,6 +233,8 @@ def analytic_equilibria(model: TowModel, *, check: bool = True) -> Equilibria:
         raise ValueError("analytic_equilibria needs a model without external forces")
     if not isinstance(model.towline, Towline):
         raise ValueError("analytic_equilibria needs the elastic Towline (eq. 2.11)")
+    if V.is_concrete(model.towline.yp) and float(model.towline.yp) != 0.0:
+        raise ValueError("analytic_equilibria needs a centred towline (yp = 0); use equilibria")
     ves, xp, EA, l0 = model.vessel, model.towline.xp, model.towline.EA, model.towline.l0
     rad = (ves.Nv - ves.Yv * xp) / (ves.Yvvv * xp - ves.Nvvv)  # eq. 6.8
     side = (rad > 0) & (rad < 1)

@@ -22,12 +22,12 @@ def trajectory(model: TowModel, sim) -> dict:
     ok = np.asarray(sim.valid)
     t = np.asarray(sim.ts)[ok]
     y = np.asarray(sim.ys)[ok]
-    xp = float(model.towline.xp)
+    xp, yp = float(model.towline.xp), float(model.towline.yp)
     l, g, psi = y[:, 3], y[:, 4], y[:, 5]
     hx, hy = t - l * np.cos(g), l * np.sin(g)
     return dict(t=t, tug_x=t, tug_y=np.zeros_like(t), hawser_x=hx, hawser_y=hy,
-                cog_x=hx - xp * np.cos(psi), cog_y=hy - xp * np.sin(psi),
-                sway_offset=np.asarray(sway_offset(y, xp)), psi=psi)
+                cog_x=hx - xp * np.cos(psi) + yp * np.sin(psi), cog_y=hy - xp * np.sin(psi) - yp * np.cos(psi),
+                sway_offset=np.asarray(sway_offset(y, xp, yp)), psi=psi)
 
 
 def force_history(model: TowModel, sim) -> dict:

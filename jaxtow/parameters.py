@@ -1,7 +1,7 @@
 """Addressing model parameters by name, for sweeps, sensitivities and the command line.
 
 A parameter name is a field of the vessel (``m``, ``a22``, ``Yv`` ...), of the towline
-(``l0``, ``xp``, ``EA``, ``Sb``, ``q``) or of the model (``psi_max``).
+(``l0``, ``xp``, ``yp``, ``EA``, ``Sb``, ``q``) or of the model (``psi_max``).
 """
 
 from __future__ import annotations
@@ -17,6 +17,7 @@ from .vessel import VESSEL_PARAMETERS
 PARAMETER_UNITS = {
     "l0": ("1", "unstretched towline length l0' (by L)"),
     "xp": ("1", "bow-hawser attachment point x_p' ahead of the CoG (by L)"),
+    "yp": ("1", "transverse attachment offset y_p' to port (by L)"),
     "EA": ("1", "towline axial stiffness EA' (by 0.5 rho T L U_tug^2)"),
     "Sb": ("1", "power-law towline stiffness Sb' (by 0.5 rho T L U_tug^2)"),
     "q": ("1", "power-law towline exponent q"),

@@ -153,11 +153,11 @@ def initial_state(model: TowModel, *, psi0: float = 0.0, y0: float = 0.0, u0: fl
 
     From y' = l' sin γ − x_p' sin ψ (eqs 2.16, 2.18): sin γ = (y0 + x_p sin ψ0)/l'.
     """
-    xp = float(model.towline.xp)
+    xp, yp = float(model.towline.xp), float(model.towline.yp)
     l = float(model.towline.l0)
     if stretched:
         l = float(model.towline.length_at_tension(model.vessel.R0))
-    s = (y0 + xp * np.sin(psi0)) / l
+    s = (y0 + xp * np.sin(psi0) + yp * np.cos(psi0)) / l
     if abs(s) >= 1:
         raise ValueError(f"parameter 'y0' ({y0}) is not reachable with towline length {l:.3f}")
     return jnp.array([u0, 0.0, 0.0, l, np.arcsin(s), psi0])

@@ -21,10 +21,15 @@ _f = dict(converter=jnp.asarray)
 #: point ahead of the CoG in ship lengths): from the CoG (0) to a bridle apex half a ship
 #: length ahead of the bow of a vessel with its CoG amidships (1.0).
 XP_RANGE = (0.0, 1.0)
+#: Documented range of the transverse attachment offset y_p' (to port, in ship lengths):
+#: a point on the hull of a barge with B/L up to 1 (|y_p'| <= 0.5), or a bridle apex offset
+#: to one side by as much.
+YP_RANGE = (-0.5, 0.5)
 
 
 class AbstractTowline(eqx.Module):
-    """A towline of unstretched length ``l0`` attached at ``xp`` ahead of the CoG.
+    """A towline of unstretched length ``l0`` attached at ``xp`` ahead of the CoG and ``yp``
+    to port of the centreline (default 0: the centred bow hawser of the thesis).
 
     Subclasses define `tension` (T' as a function of the current length l') and its inverse
     `length_at_tension`, used to place equilibria (thesis eq. 6.13 generalised).
@@ -46,29 +51,33 @@ class AbstractTowline(eqx.Module):
         """Run-time (traceable) parameter checks, see `jaxtow._validate.guard`."""
 
 
-def _check_common(l0, xp):
+def _check_common(l0, xp, yp):
     V.check_positive("l0", l0)
     V.check_range("xp", xp, *XP_RANGE)
+    V.check_range("yp", yp, *YP_RANGE)
 
 
 def _checks_common(line):
     return [V.check("l0", V.bad_not_positive(line.l0)),
-            V.check("xp", V.bad_outside(line.xp, *XP_RANGE))]
+            V.check("xp", V.bad_outside(line.xp, *XP_RANGE)),
+            V.check("yp", V.bad_outside(line.yp, *YP_RANGE))]
 
 
 class Towline(AbstractTowline):
     """Linear elastic towline, thesis eq. 2.11: T' = EA' (l'/l0' − 1) when taut, else 0.
 
     ``l0``: unstretched length / L; ``xp``: attachment point ahead of the CoG / L;
-    ``EA``: axial stiffness / (½ρTLU_tug²).
+    ``EA``: axial stiffness / (½ρTLU_tug²); ``yp``: transverse attachment offset to port / L
+    (default 0; see `jaxtow.dynamics` for the extra moment arm).
     """
 
     l0: Float[Array, ""] = eqx.field(**_f)
     xp: Float[Array, ""] = eqx.field(**_f)
     EA: Float[Array, ""] = eqx.field(**_f)
+    yp: Float[Array, ""] = eqx.field(**_f, default=0.0)
 
     def __check_init__(self):
-        _check_common(self.l0, self.xp)
+        _check_common(self.l0, self.xp, self.yp)
         V.check_positive("EA", self.EA)
 
     def tension(self, l):
@@ -92,9 +101,10 @@ class PowerLawTowline(AbstractTowline):
     xp: Float[Array, ""] = eqx.field(**_f)
     Sb: Float[Array, ""] = eqx.field(**_f)
     q: Float[Array, ""] = eqx.field(**_f)
+    yp: Float[Array, ""] = eqx.field(**_f, default=0.0)
 
     def __check_init__(self):
-        _check_common(self.l0, self.xp)
+        _check_common(self.l0, self.xp, self.yp)
         V.check_positive("Sb", self.Sb)
         V.check_positive("q", self.q)
 
@@ -112,3 +122,59 @@ class PowerLawTowline(AbstractTowline):
     def checks(self):
         return _checks_common(self) + [V.check("Sb", V.bad_not_positive(self.Sb)),
                                        V.check("q", V.bad_not_positive(self.q))]
+
+
+class Bridle(eqx.Module):
+    """A two-leg bridle: legs from hull points ``legs`` = ((x1, y1), (x2, y2)) to the apex
+    ``apex`` = (x_a, y_a) (body axes, by L, from the CoG; y to port), the towline from the apex.
+
+    While both legs are taut the towline force acts at the apex, so the bridle is the
+    equivalent attachment point (x_p', y_p') = apex of the equations of motion
+    (`jaxtow.dynamics`); `towline` builds that line. A leg goes slack when the towline
+    direction leaves the cone of the legs: `leg_tensions` solves the apex balance
+    t1 e1 + t2 e2 = −T' d (e_i unit vectors from the apex to the leg points, d the towline
+    pull direction (cos a, −sin a), a = γ + ψ) and `taut` says whether both t_i > 0.
+    """
+
+    legs: Float[Array, "2 2"] = eqx.field(converter=lambda x: jnp.asarray(x, float))
+    apex: Float[Array, "2"] = eqx.field(converter=lambda x: jnp.asarray(x, float))
+
+    def __check_init__(self):
+        if V.is_concrete(self.legs) and V.is_concrete(self.apex):
+            import numpy as np
+
+            legs, apex = np.asarray(self.legs), np.asarray(self.apex)
+            if legs.shape != (2, 2) or apex.shape != (2,):
+                raise ValueError("parameter 'legs' must be 2 points (2, 2) and 'apex' one point (2,)")
+            e = legs - apex
+            if np.min(np.hypot(e[:, 0], e[:, 1])) <= 0 or abs(e[0, 0] * e[1, 1] - e[0, 1] * e[1, 0]) < 1e-12:
+                raise ValueError("parameter 'legs': the two legs must have length and not be parallel")
+            V.check_range("apex x (xp)", apex[0], *XP_RANGE)
+            V.check_range("apex y (yp)", apex[1], *YP_RANGE)
+
+    @classmethod
+    def symmetric(cls, x_legs: float, half_spread: float, apex_x: float, apex_y: float = 0.0):
+        """Legs from (x_legs, ±half_spread) to the apex (apex_x, apex_y)."""
+        return cls(legs=[[x_legs, half_spread], [x_legs, -half_spread]], apex=[apex_x, apex_y])
+
+    @property
+    def leg_lengths(self):
+        e = self.legs - self.apex
+        return jnp.sqrt(jnp.sum(e**2, axis=-1))
+
+    def towline(self, l0, EA) -> Towline:
+        """The elastic towline from the apex (the equivalent attachment point)."""
+        return Towline(l0=l0, xp=self.apex[0], yp=self.apex[1], EA=EA)
+
+    def leg_tensions(self, tension, a):
+        """Leg tensions (t1, t2) for towline tension T' pulling along a = γ + ψ (Cramer's rule)."""
+        e = (self.legs - self.apex) / self.leg_lengths[:, None]
+        b = -tension * jnp.stack([jnp.cos(a), -jnp.sin(a)])
+        det = e[0, 0] * e[1, 1] - e[1, 0] * e[0, 1]
+        t1 = (b[0] * e[1, 1] - e[1, 0] * b[1]) / det
+        t2 = (e[0, 0] * b[1] - b[0] * e[0, 1]) / det
+        return jnp.stack([t1, t2])
+
+    def taut(self, tension, a):
+        """True where both legs carry tension (the equivalent-point model holds)."""
+        return jnp.all(self.leg_tensions(tension, a) > 0, axis=0)

@@ -91,6 +91,7 @@ def test_equilibrium_implicit_gradient(barge_2a):
     """dψ_eq/dx_p through the optimistix root (implicit differentiation) = FD."""
     m = model(barge_2a, xp=0.3)
 
+    @jax.jit
     def side_psi(xp):
         mm = jt.with_parameters(m, xp=xp)
         return jt.equilibria_fixed(mm, max_roots=3).psi[2]

@@ -9,8 +9,9 @@ from nbclient import NotebookClient
 NOTEBOOKS = sorted((Path(__file__).parent.parent / "notebooks").glob("*.ipynb"))
 
 
-# the bifurcation notebook (~40 s) runs with the slow tests (`pytest -m slow`) to keep CI short
-SLOW = {"02_bifurcations.ipynb"}
+# the notebooks (~40-90 s each) run with the slow tests (`pytest -m slow`) to keep CI short;
+# the test suite covers every API they use
+SLOW = {"01_getting_started.ipynb", "02_bifurcations.ipynb", "03_towline_design.ipynb"}
 PARAMS = [pytest.param(p, marks=pytest.mark.slow) if p.name in SLOW else p for p in NOTEBOOKS]
 
 

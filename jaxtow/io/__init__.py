@@ -10,3 +10,4 @@ from .wamit import (
     write_wamit_drift as write_wamit_drift,
 )
 from .resistance import resistance_dataset as resistance_dataset
+from .design import design_dataset as design_dataset, sensitivity_dataset as sensitivity_dataset
