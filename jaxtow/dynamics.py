@@ -76,6 +76,20 @@ class ConstantBodyForce(AbstractExternalForce):
         return self.force.astype(jnp.result_type(y))
 
 
+class CombinedForce(AbstractExternalForce):
+    """The sum of several environmental forces, e.g. wave drift and wind:
+    ``CombinedForce((waves, wind))``; sweep their parameters by path, e.g.
+    ``external.forces.0.omega`` (see `jaxtow.parameters`)."""
+
+    forces: tuple
+
+    def __call__(self, t, y, model):
+        out = jnp.zeros(3, dtype=jnp.result_type(y))
+        for f in self.forces:  # a static handful of forces
+            out = out + f(t, y, model)
+        return out
+
+
 class TowModel(eqx.Module):
     """A vessel on a towline behind a tug: the full parameter set of eqs 6.1-6.6.
 
@@ -133,8 +147,12 @@ def kinematics(y, xp, yp=0.0) -> Float[Array, "3"]:
     transverse offset y_p' of the module docstring."""
     u, v, r, l, gamma, psi = (y[i] for i in range(6))
     a = gamma + psi
-    ldot = -u * jnp.cos(a) + v * jnp.sin(a) + jnp.cos(gamma) + r * xp * jnp.sin(a) + r * yp * jnp.cos(a)
-    gdot = (u * jnp.sin(a) + v * jnp.cos(a) - jnp.sin(gamma) + r * xp * jnp.cos(a) - r * yp * jnp.sin(a)) / l
+    # velocity of the attachment point (body axes); with yp = 0, uP = u exactly, so the
+    # rest of the arithmetic is the thesis's whatever the compiler folds (batch = single runs)
+    uP = u - r * yp
+    vP = v + r * xp
+    ldot = -uP * jnp.cos(a) + vP * jnp.sin(a) + jnp.cos(gamma)
+    gdot = (uP * jnp.sin(a) + vP * jnp.cos(a) - jnp.sin(gamma)) / l
     return jnp.stack([ldot, gdot, r])
 
 
