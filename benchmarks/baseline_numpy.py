@@ -26,12 +26,14 @@ def vector_field(y, p):
     return np.array([X / (p["m"] + p["a11"]), Y / (p["m"] + p["a22"]), N / (p["Izz"] + p["a66"]), ldot, gdot, r])
 
 
-def fd_jacobian(y, p, h=1e-6):
+def fd_jacobian(y, p, h=1e-6, field=None):
+    """Central finite-difference Jacobian of ``field`` (default: the calm-water field)."""
+    f = vector_field if field is None else field
     J = np.empty((6, 6))
     for i in range(6):
         e = np.zeros(6)
         e[i] = h
-        J[:, i] = (vector_field(y + e, p) - vector_field(y - e, p)) / (2 * h)
+        J[:, i] = (f(y + e, p) - f(y - e, p)) / (2 * h)
     return J
 
 

@@ -13,6 +13,7 @@ from . import presets as presets
 from . import waves as waves
 from .dynamics import (
     AbstractExternalForce as AbstractExternalForce,
+    CombinedForce as CombinedForce,
     ConstantBodyForce as ConstantBodyForce,
     NoExternalForce as NoExternalForce,
     STATE_NAMES as STATE_NAMES,
@@ -54,6 +55,7 @@ from .simulate import (
 )
 from . import design as design
 from . import resistance as resistance
+from . import study as study
 from .resistance import operating_speed as operating_speed, required_pull as required_pull
 from .sweep import sweep as sweep, sweep_arrays as sweep_arrays
 from .towline import (

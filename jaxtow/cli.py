@@ -290,6 +290,9 @@ def build_parser() -> argparse.ArgumentParser:
     from ._cli_resistance import add_parser as add_resistance
 
     add_resistance(sub)
+    from ._cli_report import add_parser as add_report
+
+    add_report(sub)
     return p
 
 

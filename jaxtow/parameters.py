@@ -1,12 +1,16 @@
 """Addressing model parameters by name, for sweeps, sensitivities and the command line.
 
 A parameter name is a field of the vessel (``m``, ``a22``, ``Yv`` ...), of the towline
-(``l0``, ``xp``, ``yp``, ``EA``, ``Sb``, ``q``) or of the model (``psi_max``).
+(``l0``, ``xp``, ``yp``, ``EA``, ``Sb``, ``q``) or of the model (``psi_max``), or a dotted
+path into the model for anything else, e.g. ``external.omega`` and ``external.zeta_a`` of a
+regular-wave drift force, ``external.spectrum.tp`` of an irregular one, or
+``external.forces.1.speed`` inside a `CombinedForce`.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
 
 import equinox as eqx
 import jax.numpy as jnp
@@ -22,10 +26,33 @@ PARAMETER_UNITS = {
     "Sb": ("1", "power-law towline stiffness Sb' (by 0.5 rho T L U_tug^2)"),
     "q": ("1", "power-law towline exponent q"),
     "psi_max": ("rad", "largest trusted heading"),
+    "external.omega": ("rad/s", "regular-wave frequency omega"),
+    "external.zeta_a": ("m", "regular-wave amplitude zeta_a"),
+    "external.spectrum.hs": ("m", "significant wave height Hs"),
+    "external.spectrum.tp": ("s", "spectral peak period Tp"),
+    "external.speed": ("m/s", "wind speed"),
 }
 
 
+def _parts(name: str) -> list:
+    return name.split(".")
+
+
+def _step(obj, part: str):
+    return obj[int(part)] if part.isdigit() else getattr(obj, part)
+
+
+def _resolve(model, name: str):
+    try:
+        return functools.reduce(_step, _parts(name), model)
+    except (AttributeError, IndexError, TypeError):
+        raise ValueError(f"unknown parameter {name!r}: the model has no such field path") from None
+
+
 def _owner(model: TowModel, name: str) -> str:
+    if "." in name:
+        _resolve(model, name)
+        return "path"
     if name in VESSEL_PARAMETERS:
         return "vessel"
     if name in {f.name for f in dataclasses.fields(model.towline)}:
@@ -40,6 +67,8 @@ def _owner(model: TowModel, name: str) -> str:
 
 def get_parameter(model: TowModel, name: str):
     owner = _owner(model, name)
+    if owner == "path":
+        return _resolve(model, name)
     obj = model if owner == "model" else getattr(model, owner)
     return getattr(obj, name)
 
@@ -48,7 +77,9 @@ def with_parameters(model: TowModel, **values) -> TowModel:
     """Copy of `model` with the named parameters replaced (works under jit and vmap)."""
     for name, val in values.items():
         owner = _owner(model, name)
-        if owner == "model":
+        if owner == "path":
+            model = eqx.tree_at(lambda m, n=name: _resolve(m, n), model, jnp.asarray(val))
+        elif owner == "model":
             model = eqx.tree_at(lambda m: m.psi_max, model, jnp.asarray(val))
         else:
             model = eqx.tree_at(lambda m, o=owner, n=name: getattr(getattr(m, o), n), model,
@@ -64,7 +95,16 @@ def check_values(model: TowModel, name: str, values) -> None:
     """
     owner = _owner(model, name)
     vals = jnp.asarray(values)
-    if owner == "model":
+    if owner == "path":
+        parts = _parts(name)
+        obj = functools.reduce(_step, parts[:-1], model)
+        if dataclasses.is_dataclass(obj):
+            for v in vals.reshape(-1):  # rebuild per value: its __check_init__ applies the rules
+                try:
+                    dataclasses.replace(obj, **{parts[-1]: v})
+                except TypeError:  # a module with a custom __init__: no eager rule to apply
+                    break
+    elif owner == "model":
         dataclasses.replace(model, psi_max=vals)
     else:
         dataclasses.replace(getattr(model, owner), **{name: vals})

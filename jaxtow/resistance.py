@@ -52,11 +52,12 @@ import numpy as np
 import optimistix as optx
 
 from . import _validate as V
+from .dynamics import AbstractExternalForce
 from .drift.methods import FROUDE_MAX, METHODS
 from .drift.qtf import QTF, _hermite, _three_point_slopes
 from .drift.sailing import irregular_sailing_drift
 from .drift.waterline import Waterline
-from .units import G, RHO_SEA, froude_number
+from .units import G, RHO_SEA, Scales, froude_number
 from .waves.irregular import mean_drift
 from .waves.spectra import jonswap
 
@@ -584,3 +585,30 @@ def resistance_grid(tow: TowResistance, sea: SeaState, speeds, tps, *, heading=0
         return resistance(tow, eqx.tree_at(lambda x: x.tp, sea, t), s, heading=heading, tug=tug)
 
     return jax.vmap(lambda s: jax.vmap(lambda t: one(s, t))(tps))(speeds)
+
+
+class WindForce(AbstractExternalForce):
+    """Wind on the towed vessel as a tow-model force (`jaxtow.TowModel.external`; eqs
+    2.23-2.27): the OCIMF ``load`` (e.g. ``barge2_resistance().wind``) at the relative wind of
+    the barge's body velocity (u'U, v'U) in a wind of ``speed`` [m/s] from ``angle`` [rad]
+    relative to the tug's course (0 = head wind), i.e. from ``angle − ψ`` relative to the
+    bow; non-dimensional with ½ρTLU² (forces) and ½ρTL²U² (moment) of ``scales``. The yaw
+    rate's effect on the apparent wind is neglected (quasi-steady loads)."""
+
+    load: OCIMFLoad
+    speed: jnp.ndarray = eqx.field(**_f)
+    angle: jnp.ndarray = eqx.field(**_f, default=0.0)
+    scales: Scales = eqx.field(static=True, default=None)
+
+    def __check_init__(self):
+        V.check_nonnegative("speed", self.speed)
+        if self.scales is None:
+            raise ValueError("parameter 'scales' is required (e.g. jaxtow.presets.barge2_scales())")
+
+    def dimensional(self, y):
+        U = self.scales.u_tug
+        return self.load(y[0] * U, y[1] * U, self.speed, self.angle - y[5])
+
+    def __call__(self, t, y, model):
+        F = self.dimensional(y)
+        return jnp.stack([F[0] / self.scales.force, F[1] / self.scales.force, F[2] / self.scales.moment])

@@ -230,3 +230,29 @@ def test_irregular_sailing_drift_and_force(barge_2a):
     m = model(barge_2a, external=f)
     e = jt.equilibria(m)
     assert np.all(e.residual < 1e-12)
+
+
+def test_local_interpolant_equals_full_slope_tables():
+    """QTF.__call__ touches only the entries it needs; it must equal the tensor-product
+    Hermite interpolant built from the full slope tables (module docstring)."""
+    from jaxtow.drift.qtf import _hermite, _three_point_slopes
+
+    def full(q, omega, beta):
+        w = jnp.concatenate([jnp.zeros(1), q.omega])
+        v = jnp.moveaxis(jnp.concatenate([jnp.zeros_like(q.values[:, :1]), q.values], axis=1), 1, -1)
+        m = _three_point_slopes(w, v).at[..., 0].set(0.0).at[..., -1].set(0.0)
+        a = _hermite(w, v, m, jnp.maximum(omega, 0.0))
+        if q.periodic:
+            beta = jnp.mod(beta + jnp.pi, 2 * jnp.pi) - jnp.pi
+        return _hermite(q.beta, a, _three_point_slopes(q.beta, a, periodic=q.periodic), beta)
+
+    rng = np.random.default_rng(3)
+    w = np.sort(rng.uniform(0.1, 2.5, 20))
+    b = np.radians(np.linspace(0.0, 180.0, 10))
+    vals = rng.normal(size=(3, w.size, b.size))
+    vals[1:, :, [0, -1]] = 0.0
+    W, Bq = rng.uniform(0.0, 3.0, 300), rng.uniform(-4.0, 4.0, 300)
+    for q in (jt.QTF.symmetric(omega=w, beta=b, fx=vals[0], fy=vals[1], nz=vals[2]),
+              jt.QTF(omega=w, beta=b, fx=vals[0], fy=vals[1], nz=vals[2])):
+        np.testing.assert_allclose(np.asarray(jax.vmap(q)(W, Bq)),
+                                   np.asarray(jax.vmap(lambda x, y: full(q, x, y))(W, Bq)), rtol=0, atol=1e-13)

@@ -4,6 +4,7 @@ short-wave / empirical methods from the waterline."""
 from .compare import (
     compare_methods as compare_methods,
     irregular_drift as irregular_drift,
+    qtf_from_method as qtf_from_method,
     relative_mse as relative_mse,
     relative_mse_by_zone as relative_mse_by_zone,
 )

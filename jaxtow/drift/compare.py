@@ -74,3 +74,23 @@ def irregular_drift(method, wl, hs, tp, beta, u=0.0, v=0.0, *, omega=None, gamma
     S = Jonswap(hs=hs, tp=tp, gamma=gamma)(w)
     F = fn(wl, w, beta, u, v, **kwargs).force
     return jax.vmap(lambda Fi: mean_drift(w, S, Fi), in_axes=1)(F)
+
+
+def qtf_from_method(method, wl, omega, beta, **kwargs):
+    """A stationary mean-drift `QTF` tabulated from a waterline method (``method``: a function
+    of `METHODS` or its name) on ``omega`` [rad/s] × ``beta`` [rad, 0 … π, ascending from 0]
+    for a port-starboard symmetric waterline, completed to ±β by symmetry. A documented
+    stand-in for a panel-method QTF in the tow model (the waterline methods miss the
+    motion-induced drift in the motion zone); the forward-speed effect then comes from the
+    encounter frequency and Aranha's wave-drift damping of the QTF."""
+    import numpy as np
+
+    from .qtf import QTF
+
+    fn = METHODS[method] if isinstance(method, str) else method
+    w = jnp.asarray(omega, float)
+    b = np.asarray(beta, float)
+    F = np.array(jax.vmap(lambda bb: fn(wl, w, bb, **kwargs).force)(jnp.asarray(b)))  # (nb, nw, 3)
+    F[np.isclose(b, 0.0), :, 1:] = 0.0  # exact symmetry in head and following seas
+    F[np.isclose(b, np.pi), :, 1:] = 0.0
+    return QTF.symmetric(omega=np.asarray(w), beta=b, fx=F[..., 0].T, fy=F[..., 1].T, nz=F[..., 2].T)

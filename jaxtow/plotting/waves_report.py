@@ -1,0 +1,75 @@
+"""Figures of the towing-stability-in-waves report (thesis figs 6.13-6.22, 6.26, 7.5)."""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def _note(ax, note):
+    if note:
+        ax.text(0.01, -0.16, note[:150], transform=ax.transAxes, fontsize=6, color="0.4", va="top")
+
+
+def plot_max_real_map(l0, y, max_real, *, ylabel="omega [rad/s]", title="", note=""):
+    """max Re λ of the straight-behind equilibrium over (l0', y), the stability boundary
+    (zero contour) in black; hatched where no such equilibrium exists."""
+    fig, ax = plt.subplots(figsize=(6.8, 5))
+    z = np.asarray(max_real).T
+    lim = float(np.nanmax(np.abs(z))) if np.isfinite(z).any() else 1.0
+    cs = ax.pcolormesh(l0, y, z, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="auto")
+    plt.colorbar(cs, ax=ax, label="max Re lambda [U/L] (< 0 stable)")
+    if np.nanmin(z) < 0 < np.nanmax(z):
+        ax.contour(l0, y, z, levels=[0.0], colors="k", linewidths=1.2)
+    if np.isnan(z).any():
+        ax.contourf(l0, y, np.isnan(z).astype(float), levels=[0.5, 1.5], hatches=["//"], colors="none")
+    ax.set_xlabel("l0' [-]")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=9)
+    _note(ax, note)
+    return fig
+
+
+def plot_count_map(x, omega, count, *, title="", note=""):
+    """Number of equilibria over (ζa, ω) (thesis figs 6.14-6.16)."""
+    fig, ax = plt.subplots(figsize=(6.8, 5))
+    levels = np.arange(-0.5, max(int(np.max(count)), 1) + 1.5)
+    cs = ax.contourf(x, omega, np.asarray(count).T, levels=levels, cmap="viridis")
+    plt.colorbar(cs, ax=ax, label="number of equilibria", ticks=np.arange(0, levels[-1]))
+    ax.axvline(0.8, color="w", ls="--", lw=1)
+    ax.set_xlabel("zeta_a [m]")
+    ax.set_ylabel("omega [rad/s]")
+    ax.set_title(title, fontsize=9)
+    _note(ax, note)
+    return fig
+
+
+def plot_heading_map(x, omega, psi, xlabel, *, ylabel="omega [rad/s]", title=""):
+    """Heading [deg] of the equilibrium nearest straight behind over (x, ω) (or (x, Tp))."""
+    fig, ax = plt.subplots(figsize=(6.8, 5))
+    cs = ax.pcolormesh(x, omega, np.degrees(np.asarray(psi)).T, cmap="coolwarm", shading="auto")
+    plt.colorbar(cs, ax=ax, label="psi_eq [deg]")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=9)
+    return fig
+
+
+def plot_runs(runs: dict, title=""):
+    """Sway offset and heading of several runs (thesis figs 6.20-6.22, 7.5)."""
+    from ..metrics import trajectory
+
+    fig, axes = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
+    for tag, (model, sim) in runs.items():
+        tr = trajectory(model, sim)
+        axes[0].plot(tr["t"], tr["sway_offset"], lw=0.8, label=tag)
+        axes[1].plot(tr["t"], np.degrees(tr["psi"]), lw=0.8, label=tag)
+    axes[0].set_ylabel("sway offset y' [L]")
+    axes[1].set_ylabel("psi [deg]")
+    axes[1].set_xlabel("t' [-]")
+    axes[0].legend(fontsize=8)
+    axes[0].set_title(title, fontsize=9)
+    return fig

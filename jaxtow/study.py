@@ -1,0 +1,74 @@
+"""Building blocks of the thesis's towing-stability studies in waves and wind (chapters 6-7):
+Barge 2 tow models with regular or irregular head-sea drift and wind, and reductions of
+sweep results (the equilibrium nearest straight behind).
+
+Drift forces: a panel-method QTF when one is given (``qtf=``, e.g. `jaxtow.io.read_wamit_drift`
+or the Capytaine pipeline); otherwise the documented stand-in `APPROXIMATE_QTF`, a QTF
+tabulated from a waterline method (`jaxtow.drift.qtf_from_method`, default Kashiwagi:
+Fujii-Takahashi diffraction, no motion-induced drift) — results built on it say so through
+``drift_source``. The thesis used Delfrac's near-field QTFs, so numbers differ where the
+motion-induced drift matters (L/λ < 1, ω below about 0.9 rad/s for Barge 2).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import presets
+from .drift.compare import qtf_from_method
+from .drift.force import IrregularWaveDriftForce, WaveDriftForce
+from .drift.waterline import barge2_waterline
+from .dynamics import CombinedForce, TowModel
+from .waves.spectra import Jonswap
+
+#: Grid of the stand-in QTF (rad/s; headings 0-180 deg completed by symmetry).
+QTF_OMEGA = np.linspace(0.1, 2.5, 49)
+QTF_BETA_DEG = np.linspace(0.0, 180.0, 19)
+APPROXIMATE_QTF = ("APPROXIMATE drift forces: QTF tabulated from the Kashiwagi waterline method "
+                   "(diffraction only, no motion-induced drift) on the estimated Barge 2 rake, "
+                   "with Aranha's wave-drift damping; the thesis used Delfrac near-field QTFs")
+
+
+def approximate_qtf(method: str = "kashiwagi", draft=None):
+    """The documented stand-in QTF of Barge 2 (see the module docstring)."""
+    return qtf_from_method(method, barge2_waterline(draft), QTF_OMEGA, np.radians(QTF_BETA_DEG))
+
+
+def barge2_wave_model(version: str = "2a", *, l0: float = 2.5, xp: float = 0.5, omega: float = 1.0,
+                      zeta_a: float = 1.25, qtf=None, u_tug: float = presets.U_TUG_DEFAULT, wind=None) -> TowModel:
+    """Barge 2a/2b on the documented steel towline in regular head waves (ω [rad/s], ζa [m])
+    at tug speed ``u_tug`` (thesis chapter 6.2 base: x_p' = 0.5, ζa = 1.2-1.25 m, 2 m/s);
+    ``wind``: an optional `jaxtow.resistance.WindForce` added to the waves (thesis 7.2.2).
+    Sweep ω and ζa as ``external.omega`` / ``external.zeta_a`` (without wind)."""
+    q = approximate_qtf() if qtf is None else qtf
+    waves = WaveDriftForce(qtf=q, omega=omega, zeta_a=zeta_a, scales=presets.barge2_scales(u_tug))
+    ext = waves if wind is None else CombinedForce((waves, wind))
+    return TowModel(vessel=presets.VESSELS[f"barge_{version}"](),
+                    towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug), external=ext)
+
+
+def barge2_irregular_model(version: str = "2a", *, l0: float = 2.5, xp: float = 0.5, hs: float = 2.4,
+                           tp: float = 7.0, qtf=None, u_tug: float = presets.U_TUG_DEFAULT,
+                           omega=None) -> TowModel:
+    """Barge 2a/2b in an irregular head sea (JONSWAP Hs, Tp; mean drift, thesis 6.3); sweep Tp
+    as ``external.spectrum.tp``. ``omega``: integration grid (default 0.2-3 rad/s, 281 points)."""
+    q = approximate_qtf() if qtf is None else qtf
+    w = np.linspace(0.2, 3.0, 281) if omega is None else np.asarray(omega, float)
+    force = IrregularWaveDriftForce(qtf=q, spectrum=Jonswap(hs=hs, tp=tp), omega=w,
+                                    scales=presets.barge2_scales(u_tug))
+    return TowModel(vessel=presets.VESSELS[f"barge_{version}"](),
+                    towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug), external=force)
+
+
+def nearest_straight(arrays: dict, field: str = "max_real"):
+    """``field`` of the valid equilibrium nearest ψ = 0 at every sweep point (NaN where none):
+    the thesis's position 3 (straight behind) when it exists."""
+    psi = np.where(arrays["valid"], np.abs(arrays["psi"]), np.inf)
+    k = np.argmin(psi, axis=-1)
+    out = np.take_along_axis(np.asarray(arrays[field], float), k[..., None], -1)[..., 0]
+    return np.where(np.isfinite(np.min(psi, axis=-1)), out, np.nan)
+
+
+def valid_count(arrays: dict):
+    """Number of valid equilibria at every sweep point."""
+    return np.sum(np.asarray(arrays["valid"]), axis=-1)
