@@ -37,7 +37,8 @@ def cmd_report(args):
     from .io import save_dataset
     from .metrics import fishtail_metrics
     from .plotting.calm import save
-    from .plotting.waves_report import plot_count_map, plot_heading_map, plot_max_real_map, plot_runs
+    from .plotting.waves_report import (plot_count_map, plot_heading_map, plot_max_real_map, plot_runs,
+                                        plot_with_without)
     from .simulate import initial_state, simulate
     from .study import APPROXIMATE_QTF, approximate_qtf, barge2_irregular_model, barge2_wave_model, valid_count
     from .waves import physical_tp_range
@@ -74,6 +75,12 @@ def cmd_report(args):
         save(plot_max_real_map(l0, omega, maps[v], title=f"Barge {v}: max Re lambda, straight behind, "
                                                           f"zeta_a = {za} m (figs 6.17-6.19)", note=source),
              out / f"barge_{v}_map_l0_omega.png")
+    for v in ("2a", "2b"):
+        picks = {f"omega = {omega[k]:.2f} rad/s": maps[v][:, k]
+                 for k in sorted({int(np.argmin(np.abs(omega - w))) for w in (0.5, 0.8, 1.0, 1.5)})}
+        save(plot_with_without(l0, calm[v], picks, title=f"Barge {v}: with and without waves, zeta_a = {za} m "
+                                                          "(figs 6.27-6.28)", note=source),
+             out / f"barge_{v}_with_without_waves.png")
     low = omega < 0.65
     verdict = lambda a: np.where(a < -STABLE_TOL, -1, np.where(a > STABLE_TOL, 1, 0))
     same = verdict(maps["2a"][:, low]) == verdict(calm["2a"])[:, None]

@@ -73,3 +73,19 @@ def plot_runs(runs: dict, title=""):
     axes[0].legend(fontsize=8)
     axes[0].set_title(title, fontsize=9)
     return fig
+
+
+def plot_with_without(l0, calm, waves: dict, *, title="", note=""):
+    """max Re λ of the straight-behind equilibrium against l0' without waves and with waves
+    of a few frequencies (thesis figs 6.27-6.28)."""
+    fig, ax = plt.subplots(figsize=(6.8, 4.5))
+    ax.plot(l0, calm, "k", lw=2, label="without waves")
+    for label, a in waves.items():
+        ax.plot(l0, a, lw=1, label=label)
+    ax.axhline(0.0, color="0.5", lw=0.8)
+    ax.set_xlabel("l0' [-]")
+    ax.set_ylabel("max Re lambda [U/L]")
+    ax.legend(fontsize=8)
+    ax.set_title(title, fontsize=9)
+    _note(ax, note)
+    return fig
