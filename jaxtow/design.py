@@ -27,7 +27,6 @@ from __future__ import annotations
 import dataclasses
 import math
 
-import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -263,20 +262,13 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
     ext = tuple(f"external.{f}" for f in _external_parameters(model))
     names = tuple(parameters) if parameters is not None else tuple(VESSEL_PARAMETERS) + line + ext
 
-    def get(m, n):
-        return getattr(m.external, n.split(".", 1)[1]) if n.startswith("external.") else get_parameter(m, n)
-
-    def setp(m, vals):
-        plain = {n: v for n, v in zip(names, vals) if not n.startswith("external.")}
-        m = with_parameters(m, **plain) if plain else m
-        for n, v in zip(names, vals):
-            if n.startswith("external."):
-                m = eqx.tree_at(lambda mm, f=n.split(".", 1)[1]: getattr(mm.external, f), m, v)
-        return m
-
     def one(m):
-        x = jnp.stack([jnp.asarray(get(m, n), float) for n in names])
-        f = lambda xx: spectral_abscissa(setp(m, xx), straight_equilibrium(setp(m, xx), psi0)[0])
+        x = jnp.stack([jnp.asarray(get_parameter(m, n), float) for n in names])
+
+        def f(xx):
+            mm = with_parameters(m, **dict(zip(names, xx)))
+            return spectral_abscissa(mm, straight_equilibrium(mm, psi0)[0])
+
         a, g = jax.value_and_grad(f)(x)
         return x, g, a
 

@@ -367,7 +367,9 @@ class Budget(eqx.Module):
 
     @property
     def shares(self):
-        return 100.0 * self.resistance / self.total[..., None]
+        """Each component in % of the total (0 where the total is exactly 0: no load at all)."""
+        tot = self.total[..., None]
+        return jnp.where(tot != 0, 100.0 * self.resistance / jnp.where(tot != 0, tot, 1.0), 0.0)
 
     def as_dict(self) -> dict:
         return {c: self.resistance[..., i] for i, c in enumerate(COMPONENTS)}

@@ -191,3 +191,8 @@ def test_cli_resistance_writes_outputs(tmp_path, capsys):
     for f in ("budget_vs_tp_survival.png", "budget_vs_speed_sailing.png", "operating_point_sailing.png",
               "summary.json"):
         assert (tmp_path / f).is_file()
+
+
+def test_no_load_gives_zero_shares_not_nan(calm):
+    b = R.resistance(calm, CALM_SEA, 0.0)
+    assert float(b.total) == 0.0 and np.all(np.asarray(b.shares) == 0.0)

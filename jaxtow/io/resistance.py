@@ -21,7 +21,7 @@ def resistance_dataset(budget: Budget, speeds, tps, *, tow=None, sea=None, attrs
     data = {
         "resistance": (dims, r, {"units": "N", "long_name": "resistance along the course"}),
         "total": (dims[:2], total, {"units": "N", "long_name": "total tow resistance"}),
-        "share": (dims, 100.0 * r / total[..., None], {"units": "%", "long_name": "share of the total"}),
+        "share": (dims, np.asarray(budget.shares), {"units": "%", "long_name": "share of the total"}),
         "froude": (("speed",), np.asarray(budget.froude)[:, 0], {"long_name": "Fn = U/sqrt(gL)"}),
         "froude_ok": (("speed",), np.asarray(budget.froude)[:, 0] < 0.15, {"long_name": "Fn < 0.15"}),
     }
