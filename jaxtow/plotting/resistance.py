@@ -22,6 +22,21 @@ def _note(ds, ax):
                 fontsize=7, color="0.4")
 
 
+def _finish_budget_axes(ds, axes, xlabel, title, legend_both: bool):
+    """Labels, grid, share limits, legend and the ILLUSTRATIVE note of a (kN, %) axes pair."""
+    for ax in axes:
+        ax.set_xlabel(xlabel)
+        ax.grid(alpha=0.3)
+    axes[0].set_ylabel("resistance [kN]")
+    axes[1].set_ylabel("share of total [%]")
+    axes[1].set_ylim(0, 100)
+    for ax in axes if legend_both else axes[:1]:
+        ax.legend(fontsize=7)
+    axes[0].set_title(title, fontsize=9)
+    _note(ds, axes[0])
+    return axes
+
+
 def plot_budget_vs_tp(ds, speeds=None, tp_range=None, axes=None, title: str = ""):
     """Resistance per component and total [kN] (left) and shares [%] (right) against Tp at
     the given speeds (thesis figs 7.2, 7.3); ``tp_range`` shades the physical Tp range."""
@@ -37,18 +52,10 @@ def plot_budget_vs_tp(ds, speeds=None, tp_range=None, axes=None, title: str = ""
             axes[0].plot(d.tp, d.resistance.sel(component=c) / 1e3, ls, color=COLOURS[c],
                          label=f"{c}, U = {float(d.speed):g} m/s")
             axes[1].plot(d.tp, d.share.sel(component=c), ls, color=COLOURS[c], label=f"{c}, U = {float(d.speed):g} m/s")
-    for ax in axes:
-        if tp_range is not None:
+    if tp_range is not None:
+        for ax in axes:
             ax.axvspan(*tp_range, color="0.9", zorder=0, lw=0, label="physical Tp range")
-        ax.set_xlabel("Tp [s]")
-        ax.grid(alpha=0.3)
-    axes[0].set_ylabel("resistance [kN]")
-    axes[1].set_ylabel("share of total [%]")
-    axes[1].set_ylim(0, 100)
-    axes[0].legend(fontsize=7)
-    axes[0].set_title(title, fontsize=9)
-    _note(ds, axes[0])
-    return axes
+    return _finish_budget_axes(ds, axes, "Tp [s]", title, legend_both=False)
 
 
 def plot_budget_vs_speed(ds, tp, axes=None, title: str = ""):
@@ -63,17 +70,7 @@ def plot_budget_vs_speed(ds, tp, axes=None, title: str = ""):
         share = d.share.sel(component=c).values
         axes[1].fill_between(d.speed, bottom, bottom + share, color=COLOURS[c], alpha=0.6, label=c)
         bottom = bottom + share
-    for ax in axes:
-        ax.set_xlabel("tow speed U [m/s]")
-        ax.grid(alpha=0.3)
-    axes[0].set_ylabel("resistance [kN]")
-    axes[1].set_ylabel("share of total [%]")
-    axes[1].set_ylim(0, 100)
-    axes[0].legend(fontsize=8)
-    axes[1].legend(fontsize=8)
-    axes[0].set_title(title or f"Tp = {float(d.tp):g} s", fontsize=9)
-    _note(ds, axes[0])
-    return axes
+    return _finish_budget_axes(ds, axes, "tow speed U [m/s]", title or f"Tp = {float(d.tp):g} s", legend_both=True)
 
 
 def plot_operating_point(speeds, pull, resist, point=None, ax=None, title: str = ""):
