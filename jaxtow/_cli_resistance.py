@@ -5,11 +5,12 @@ from __future__ import annotations
 
 import json
 import math
-import tomllib
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
+
+from ._cli_config import config_dispatch
+from ._cli_config import read_config as _read_config
 
 NM = 1852.0  # m
 TONNE_FORCE = 9.80665e3  # N
@@ -21,15 +22,8 @@ _SEA_KEYS = {"name", "hs", "tp", "gamma", "wind_speed", "current_speed", "wave_a
 
 
 def read_config(config) -> dict:
-    """The parsed config: a built-in name (``barge2``), a TOML path, or a dict."""
-    if isinstance(config, dict):
-        return config
-    if str(config) in BUILTIN:
-        return tomllib.loads(resources.files("jaxtow").joinpath("data", BUILTIN[str(config)]).read_text())
-    path = Path(config)
-    if not path.is_file():
-        raise ValueError(f"config {str(config)!r}: no such file (built-in configs: {sorted(BUILTIN)})")
-    return tomllib.loads(path.read_text())
+    """The parsed config: a built-in name (barge2), a TOML path, or a dict."""
+    return _read_config(config, BUILTIN)
 
 
 def _unknown(section: str, got: dict, allowed: set):
@@ -225,14 +219,5 @@ def add_parser(sub):
                                   "(print it with --show-config)")
     r.add_argument("--out", default=None, help="also write datasets, figures and summary.json to this folder")
     r.add_argument("--show-config", action="store_true", help="print the config (e.g. the built-in one) and exit")
-    r.set_defaults(func=_dispatch)
+    r.set_defaults(func=config_dispatch('resistance', BUILTIN, lambda a: cmd_resistance(a)))
 
-
-def _dispatch(args):
-    if args.show_config:
-        if str(args.config) in BUILTIN:
-            print(resources.files("jaxtow").joinpath("data", BUILTIN[str(args.config)]).read_text())
-        else:
-            print(Path(args.config).read_text())
-        return
-    cmd_resistance(args)

@@ -13,6 +13,8 @@ Subcommands:
   4.3-4.6, 5.6-5.7) for Barge 1, Barge 2 or a waterline file, with relative MSE per zone.
 * ``jaxtow bifurcation``: equilibrium branches in one parameter with pitchfork, fold and
   Hopf points (first Lyapunov coefficient) and limit cycles (path width, Floquet multipliers).
+* ``jaxtow bem``: panel-method (Capytaine, optional extra) RAOs and far-/near-field drift
+  QTF databases for Barge 1, Barge 2 or a mesh file, and the mesh-convergence study.
 * ``jaxtow simulate``: time-domain runs (time traces, phase portraits, force history,
   fishtailing metrics).
 
@@ -293,6 +295,9 @@ def build_parser() -> argparse.ArgumentParser:
     from ._cli_report import add_parser as add_report
 
     add_report(sub)
+    from ._cli_bem import add_parser as add_bem
+
+    add_bem(sub)
     return p
 
 

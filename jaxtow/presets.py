@@ -66,6 +66,17 @@ ASSUMPTIONS = {
                        note="ILLUSTRATIVE Barge 2 wind coefficients (BARGE2_WIND_TABLE): OCIMF-form curve "
                             "shapes with values chosen by jaxtow; not measured, not the thesis's "
                             "(unpublished) Smit Barge 2 table"),
+    "cog_z": dict(value=10.0, units="m",
+                  note="height of the CoG above the keel for the panel computations (thesis Table B.3, "
+                       "Barge 1; the thesis's choice after its CoG study, appendix B.3)"),
+    "radii_of_gyration": dict(value=(0.35, 0.25, 0.25), units="B, L, L",
+                              note="k_xx = 0.35 B, k_yy = k_zz = 0.25 L: the middle of Journee's ranges "
+                                   "(0.30-0.40 B, 0.22-0.28 L; Journee & Massie, Offshore Hydromechanics, "
+                                   "2001), which thesis Table B.1 quotes (the table itself is lost); estimate"),
+    "roll_damping": dict(value=0.05, units="of critical",
+                         note="linearised viscous roll damping for the panel-method RAOs (potential flow "
+                              "alone gives an unbounded roll resonance); 5 % of critical, a usual value "
+                              "for a barge without bilge keels; estimate"),
     "wind_height": dict(value=10.0, units="m",
                         note="ILLUSTRATIVE above-water height of Barge 2 with deck cargo (about 1.1 m "
                              "freeboard + 9 m cargo); the thesis's 'arbitrary deck load' is not given"),
@@ -133,6 +144,12 @@ def clarke_added_mass(m_nd: float, length: float, breadth: float, draft: float,
     yvdot = math.pi * t_l**2 * (1.0 + 0.16 * cb * b_t - 5.1 * b_l**2)  # by ½ρL³
     nrdot = math.pi * t_l**2 * (1.0 / 12.0 + 0.017 * cb * b_t - 0.33 * b_l)  # by ½ρL⁵
     return dict(a11=a11_fraction * m_nd, a22=yvdot / t_l, a66=nrdot / t_l)
+
+
+def radii_of_gyration(length: float, breadth: float) -> tuple[float, float, float]:
+    """(k_xx, k_yy, k_zz) [m] from `ASSUMPTIONS['radii_of_gyration']` (Journee's approximations)."""
+    fx, fy, fz = ASSUMPTIONS["radii_of_gyration"]["value"]
+    return fx * breadth, fy * length, fz * length
 
 
 def barge2_rake(draft: float | None = None) -> dict:

@@ -79,8 +79,9 @@ def write_wamit_drift(q: QTF, path, *, ulen: float = 1.0, rho: float = RHO_SEA, 
     Path(path).write_text("\n".join(lines) + "\n")
 
 
-def qtf_to_dataset(q: QTF):
-    """A `QTF` as an xarray Dataset with units (jaxtow's own NetCDF format)."""
+def qtf_to_dataset(q: QTF, attrs: dict | None = None):
+    """A `QTF` as an xarray Dataset with units (jaxtow's own NetCDF format); ``attrs``
+    (provenance: mesh, solver, versions) are stored with it."""
     import xarray as xr
 
     ds = xr.Dataset(
@@ -92,21 +93,24 @@ def qtf_to_dataset(q: QTF):
                 "beta": ("beta", np.asarray(q.beta), {"units": "rad",
                                                       "long_name": "wave heading, 0 = head seas, from-direction CCW"})},
     )
+    ds.attrs.update(attrs or {})
     ds.attrs["jaxtow_qtf"] = 1
     return ds
 
 
-def save_qtf(q: QTF, path) -> None:
-    """NetCDF (``.nc``) or CSV (``.csv``: columns omega, beta, fx, fy, nz; SI) by extension."""
+def save_qtf(q: QTF, path, attrs: dict | None = None) -> None:
+    """NetCDF (``.nc``, with ``attrs``) or CSV (``.csv``: columns omega, beta, fx, fy, nz; SI;
+    ``attrs`` as ``#`` header lines) by extension."""
     path = Path(path)
     if path.suffix == ".csv":
         W, B = np.meshgrid(np.asarray(q.omega), np.asarray(q.beta), indexing="ij")
         v = np.asarray(q.values)
         table = np.column_stack([W.ravel(), B.ravel(), v[0].ravel(), v[1].ravel(), v[2].ravel()])
+        head = [f"{k}: {v}" for k, v in (attrs or {}).items()]
         np.savetxt(path, table, delimiter=",", fmt="%.17e",
-                   header="omega [rad/s],beta [rad],fx [N/m2],fy [N/m2],nz [N m/m2]")
+                   header="\n".join(head + ["omega [rad/s],beta [rad],fx [N/m2],fy [N/m2],nz [N m/m2]"]))
     else:
-        qtf_to_dataset(q).to_netcdf(path)
+        qtf_to_dataset(q, attrs).to_netcdf(path)
 
 
 def load_qtf(path) -> QTF:

@@ -1,0 +1,482 @@
+"""First-order panel solution with Capytaine, RAOs, and far- and near-field mean drift.
+
+The pipeline for one hull (`bem_drift`), one frequency at a time so that memory stays at one
+frequency's matrices (shared/notes/capytaine.md: about 10 GB per frequency at 0.5 m panels):
+
+1. radiation (6 DOF, unit displacement) and diffraction problems (every heading), solved
+   with the indirect (source) method, sources kept;
+2. RAOs from (−ω²(M + A) − iω(B + B_v) + C) ξ = F_FK + F_D (Capytaine's e^{−iωt}), with the
+   exact hydrostatic stiffness of `rigid_body` and the documented viscous roll damping B_v;
+3. far-field drift (surge, sway, yaw) from the Kochin functions with
+   `capytaine.post_pro.far_field_mean_drift_force` (Maruo / Newman momentum conservation);
+4. near-field drift (Pinkster pressure integration, `jaxtow.bem.nearfield`) from the total
+   velocity at the panel centres (Capytaine's surface gradient, with the jump term) and the
+   total potential at the waterline-segment midpoints, with the parts I-IV and the
+   sectional moments;
+5. the frequency's results written to a NetCDF cache file whose name hashes everything that
+   determines them (mesh, mass, ω, headings, ρ, g, depth, damping, Capytaine version), so
+   a rerun costs nothing.
+
+Headings are jaxtow's: β = 0 head seas, counter-clockwise from the bow, the direction the
+waves come *from*; Capytaine's wave direction (travelling *to*) is β + π.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .. import presets
+from ..units import G, RHO_SEA
+from .meshes import HullMesh
+from .nearfield import apply_gradient, near_field_drift, surface_gradient_operator
+
+INSTALL_HINT = ("jaxtow.bem needs the optional panel-method extra (Capytaine): "
+                "pip install 'jaxtow[bem]'  (or: pip install capytaine)")
+DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
+
+
+def require_capytaine():
+    """Import Capytaine or raise an ImportError that says how to install it."""
+    try:
+        import capytaine
+    except ImportError as err:  # pragma: no cover - exercised with the extra missing
+        raise ImportError(INSTALL_HINT) from err
+    return capytaine
+
+
+@dataclasses.dataclass(frozen=True)
+class RigidBody:
+    """Mass properties and hydrostatics of a freely floating hull, about its CoG.
+
+    ``mass`` [kg], ``cog`` (3,) [m] in mesh axes (z up from the waterline), ``inertia`` (3, 3)
+    [kg m²] about the CoG, ``stiffness`` (6, 6) hydrostatic restoring about the CoG,
+    ``damping`` (6, 6) additional linear (viscous) damping, ``notes`` (where each value came
+    from)."""
+
+    mass: float
+    cog: np.ndarray
+    inertia: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+    notes: dict
+
+    def mass_matrix(self) -> np.ndarray:
+        M = np.zeros((6, 6))
+        M[:3, :3] = self.mass * np.eye(3)
+        M[3:, 3:] = self.inertia
+        return M
+
+
+def rigid_body(mesh: HullMesh, cog_z: float | None = None, *, radii=None, roll_damping: float | None = None,
+               rho: float = RHO_SEA, g: float = G) -> RigidBody:
+    """Free-floating rigid body for ``mesh``: mass ρ∇, CoG above the centre of buoyancy at
+    height ``cog_z`` above the keel (thesis Table B.3: 10 m; default
+    `presets.ASSUMPTIONS['cog_z']`), radii of gyration ``radii`` = (k_xx, k_yy, k_zz) [m]
+    (default: Journée's approximations, `presets.radii_of_gyration`), exact hydrostatic
+    stiffness from the waterline polygon, and a linear roll damping of ``roll_damping`` times
+    critical (default `presets.ASSUMPTIONS['roll_damping']`; it is finalised per frequency
+    with the roll added mass, see `_roll_damping`)."""
+    if cog_z is None:
+        cog_z = presets.ASSUMPTIONS["cog_z"]["value"]
+    if roll_damping is None:
+        roll_damping = presets.ASSUMPTIONS["roll_damping"]["value"]
+    if not (math.isfinite(cog_z) and cog_z >= 0):
+        raise ValueError(f"parameter 'cog_z' (height of the CoG above the keel) must be >= 0, got {cog_z!r}")
+    if not (math.isfinite(roll_damping) and 0 <= roll_damping < 1):
+        raise ValueError(f"parameter 'roll_damping' (fraction of critical) must lie in [0, 1), got {roll_damping!r}")
+    V = mesh.volume
+    if not V > 0:
+        raise ValueError(f"mesh {mesh.name!r} has a non-positive displaced volume ({V}); check its normals")
+    keel = float(mesh.vertices[:, 2].min())
+    xb = mesh.centre_of_buoyancy()
+    cog = np.array([xb[0], xb[1], keel + float(cog_z)])
+    m = rho * V
+    notes = {"mass": "rho * displaced volume (free floating)", "cog_z": f"{cog_z} m above the keel"}
+    if radii is None:
+        L = float(np.ptp(mesh.vertices[:, 0]))
+        B = float(np.ptp(mesh.vertices[:, 1]))
+        radii = presets.radii_of_gyration(L, B)
+        notes["radii"] = presets.ASSUMPTIONS["radii_of_gyration"]["note"]
+    else:
+        notes["radii"] = "user"
+    kxx, kyy, kzz = (float(r) for r in radii)
+    inertia = m * np.diag([kxx**2, kyy**2, kzz**2])
+    wp = mesh.waterplane()
+    xg, yg = cog[0], cog[1]
+    A = wp["area"]
+    Sx, Sy = wp["sx"] - xg * A, wp["sy"] - yg * A  # ∬ (x − x_G), ∬ (y − y_G)
+    Ixx = wp["ixx"] - 2 * xg * wp["sx"] + xg**2 * A  # ∬ (x − x_G)²
+    Iyy = wp["iyy"] - 2 * yg * wp["sy"] + yg**2 * A
+    Ixy = wp["ixy"] - xg * wp["sy"] - yg * wp["sx"] + xg * yg * A
+    rg = rho * g
+    C = np.zeros((6, 6))
+    C[2, 2] = rg * A
+    C[2, 3] = C[3, 2] = rg * Sy
+    C[2, 4] = C[4, 2] = -rg * Sx
+    C[3, 3] = rg * (Iyy + V * (xb[2] - cog[2]))
+    C[4, 4] = rg * (Ixx + V * (xb[2] - cog[2]))
+    C[3, 4] = C[4, 3] = -rg * Ixy
+    if C[3, 3] <= 0:
+        raise ValueError(f"the hull is unstable in roll: GM_T = {C[3, 3] / (rg * V):.3f} m <= 0 with cog_z = {cog_z} m")
+    D = np.zeros((6, 6))
+    D[3, 3] = roll_damping  # fraction of critical; converted per frequency
+    notes["roll_damping"] = f"{roll_damping} of critical (linearised viscous roll damping)"
+    return RigidBody(m, cog, inertia, C, D, notes)
+
+
+def _roll_damping(body: RigidBody, a44: float) -> np.ndarray:
+    """Dimensional viscous damping: B44 = 2 ζ sqrt(C44 (I44 + A44(ω)))."""
+    D = np.zeros((6, 6))
+    D[3, 3] = 2 * body.damping[3, 3] * math.sqrt(body.stiffness[3, 3] * (body.inertia[0, 0] + max(a44, 0.0)))
+    return D
+
+
+def to_capytaine_mesh(mesh: HullMesh):
+    """(hull, lid) as Capytaine meshes (lid None when the mesh has none)."""
+    cpt = require_capytaine()
+    hull = cpt.Mesh(vertices=mesh.vertices, faces=mesh.faces, name=mesh.name)
+    lid = (cpt.Mesh(vertices=mesh.lid_vertices, faces=mesh.lid_faces, name=mesh.name + "_lid")
+           if len(mesh.lid_faces) else None)
+    return hull, lid
+
+
+def read_mesh(path, *, panel_size: float | None = None, lid: bool = True, name: str | None = None) -> HullMesh:
+    """Read a user hull in any format Capytaine reads (GDF, MAR, NEMOH, STL, PNL, ...), keep
+    its immersed part (z <= 0) and add a lid on the waterplane (Capytaine's
+    ``generate_lid``). Normals must point into the water."""
+    cpt = require_capytaine()
+    m = cpt.load_mesh(str(path))
+    if hasattr(m, "immersed_part"):
+        m = m.immersed_part()
+    v = np.asarray(m.vertices, float)
+    f = np.asarray(m.faces, int)
+    if f.shape[1] == 3:
+        f = np.concatenate([f, f[:, 2:3]], axis=1)
+    lv, lf = np.zeros((0, 3)), np.zeros((0, 4), int)
+    if lid:
+        lm = m.generate_lid(z=0.0)
+        lv, lf = np.asarray(lm.vertices, float), np.asarray(lm.faces, int)
+        if lf.size and lf.shape[1] == 3:
+            lf = np.concatenate([lf, lf[:, 2:3]], axis=1)
+    ps = float(np.sqrt(np.median(HullMesh(v, f, lv, lf, "x", 0.0).areas))) if panel_size is None else panel_size
+    return HullMesh(v, f, lv, lf, name or Path(path).stem, ps, dict(path=str(path)))
+
+
+def _theta_grid(step_deg: float = 0.5):
+    """Kochin angles: 0…2π in ``step_deg`` steps, padded by 2 steps on each side (the far-field
+    routine needs every heading strictly inside; shared/notes/capytaine.md)."""
+    n = int(round(360 / step_deg))
+    return np.radians(np.arange(-2, n + 3) * step_deg)
+
+
+def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step):
+    cpt = require_capytaine()
+    h = hashlib.sha256()
+    for arr in (mesh.vertices, mesh.faces, mesh.lid_vertices, mesh.lid_faces, body.cog, body.inertia,
+                body.stiffness, body.damping, np.asarray(beta, float)):
+        h.update(np.ascontiguousarray(arr).tobytes())
+    h.update(json.dumps([float(body.mass), float(omega), rho, g, str(depth), theta_step, cpt.__version__, 2]).encode())
+    return h.hexdigest()[:20]
+
+
+def solve_frequency(mesh: HullMesh, body: RigidBody | None, omega: float, beta, *, rho: float = RHO_SEA, g: float = G,
+                    water_depth: float = math.inf, theta_step: float = 0.5, fixed: bool = False,
+                    solver=None) -> dict:
+    """Everything at one frequency (see the module docstring); plain NumPy arrays.
+    ``fixed=True`` holds the body still (RAOs zero: diffraction only)."""
+    cpt = require_capytaine()
+    from capytaine.bem.airy_waves import airy_waves_potential
+    from capytaine.io.xarray import kochin_data_array
+
+    beta = np.asarray(beta, float)
+    if body is None:
+        if not fixed:
+            raise ValueError("parameter 'body' is needed unless fixed=True")
+        body = RigidBody(0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True})
+    hull, lid = to_capytaine_mesh(mesh)
+    mass_kw = dict(center_of_mass=body.cog, mass=body.mass) if body.mass > 0 else {}
+    cbody = cpt.FloatingBody(mesh=hull, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=body.cog),
+                             name=mesh.name, **mass_kw)
+    solver = solver or cpt.BEMSolver(method="indirect")
+    env = dict(omega=float(omega), rho=rho, g=g, water_depth=water_depth)
+    rad = [cpt.RadiationProblem(body=cbody, radiating_dof=d, **env) for d in DOFS]
+    dif = [cpt.DiffractionProblem(body=cbody, wave_direction=float(b + math.pi), **env) for b in beta]
+    results = solver.solve_all(rad + dif, keep_details=True, progress_bar=False, _check_wavelength=False)
+    rres, dres = results[:6], results[6:]
+
+    A = np.array([[r.added_mass[d] for d in DOFS] for r in rres]).T  # A[i, j]: force i from motion j
+    Bd = np.array([[r.radiation_damping[d] for d in DOFS] for r in rres]).T
+    from capytaine.bem.airy_waves import froude_krylov_force
+    fk = np.array([[froude_krylov_force(r.problem)[d] for d in DOFS] for r in dres])
+    fd = np.array([[r.forces[d] for d in DOFS] for r in dres])
+    exc = fk + fd  # (nb, 6)
+    Bv = np.zeros((6, 6)) if fixed else _roll_damping(body, A[3, 3])
+    H = -omega**2 * (body.mass_matrix() + A) - 1j * omega * (Bd + Bv) + body.stiffness
+    rao = np.zeros_like(exc) if fixed else np.linalg.solve(H, exc.T).T  # (nb, 6)
+
+    # far field (Kochin functions)
+    theta = _theta_grid(theta_step)
+    ds = cpt.assemble_dataset(results)
+    ds.update(kochin_data_array(results, theta))
+    import xarray as xr
+
+    X = xr.DataArray(rao[None], dims=("omega", "wave_direction", "radiating_dof"),
+                     coords={"omega": [float(omega)], "wave_direction": beta + math.pi, "radiating_dof": list(DOFS)})
+    X = X.transpose("omega", "wave_direction", "radiating_dof")
+    drift = cpt.post_pro.mean_drift_force.far_field_mean_drift_force(X, ds)
+    ff = np.stack([np.real(np.diagonal(np.asarray(drift[f"drift_force_{c}"].transpose("omega", ...))[0]))
+                   for c in ("surge", "sway", "yaw")], axis=-1)
+    ff[:, 2] -= body.cog[0] * ff[:, 1] - body.cog[1] * ff[:, 0]  # yaw about the CoG's vertical axis
+
+    # near field: total velocity on the hull panels, total potential on the waterline
+    k = float(rres[0].problem.wavenumber)
+    gf = dict(free_surface=0.0, water_depth=water_depth, wavenumber=k)
+    hull_mesh = cbody.mesh
+    n_hull = hull_mesh.nb_faces
+    full = cbody.mesh_including_lid
+    if not np.allclose(np.asarray(full.faces_centers)[:n_hull], np.asarray(hull_mesh.faces_centers)):
+        raise RuntimeError("Capytaine reordered the hull panels inside the hull+lid mesh")
+    src = np.stack([r.sources for r in results], axis=-1)  # (n_all, 6 + nb)
+    p0, p1, owner = mesh.waterline()
+    wpts = 0.5 * (p0 + p1)
+    centres = np.asarray(hull_mesh.faces_centers)
+    nrm = np.asarray(hull_mesh.faces_normals)
+    pts = np.concatenate([centres, wpts])
+    pot = np.asarray(solver.engine.build_S_matrix(pts, full, **gf)) @ src  # (n_hull + m, nprob)
+    index, weights = surface_gradient_operator(mesh.vertices, mesh.faces, centres, nrm, wpts, owner)
+    phi = np.empty((beta.size, pts.shape[0]), complex)
+    for ib, r in enumerate(dres):
+        phi[ib] = pot[:, 6 + ib] + airy_waves_potential(pts, r.problem) + pot[:, :6] @ rao[ib]
+    # tangential velocity from the surface potential; normal velocity = the hull's (the body condition)
+    u_n = -1j * omega * np.sum((rao[:, None, :3] + np.cross(rao[:, None, 3:], centres - body.cog)) * nrm, axis=-1)
+    u_tot = np.moveaxis(apply_gradient(index, weights, phi.T), 1, 0) + u_n[..., None] * nrm
+    phi_tot = phi[:, n_hull:]
+    nf = near_field_drift(
+        omega=omega, rho=rho, g=g,
+        panels=dict(centres=centres, normals=np.asarray(hull_mesh.faces_normals), areas=np.asarray(hull_mesh.faces_areas),
+                    velocity=u_tot),
+        waterline=dict(points=wpts, normals=mesh.normals[owner], lengths=np.linalg.norm(p1 - p0, axis=1),
+                       potential=phi_tot),
+        mass=body.mass, inertia=body.inertia, cog=body.cog, motion=rao)
+    return dict(omega=float(omega), beta=beta, added_mass=A, damping=Bd, viscous_damping=Bv, excitation=exc, rao=rao,
+                far_field=ff, near_field=nf["force"], near_field_parts=nf["parts"], sectional=nf["sectional"],
+                wavenumber=k)
+
+
+_PARTS = ("I", "II", "III", "IV")
+_COMPONENTS = ("fx", "fy", "nz")
+
+
+def _frequency_dataset(r: dict):
+    import xarray as xr
+
+    w = [r["omega"]]
+    dims_b = ("omega", "beta")
+    rao, exc = r["rao"][None], r["excitation"][None]
+    ds = xr.Dataset(
+        {
+            "rao_real": (dims_b + ("dof",), rao.real), "rao_imag": (dims_b + ("dof",), rao.imag),
+            "excitation_real": (dims_b + ("dof",), exc.real), "excitation_imag": (dims_b + ("dof",), exc.imag),
+            "added_mass": (("omega", "dof", "dof_j"), r["added_mass"][None]),
+            "radiation_damping": (("omega", "dof", "dof_j"), r["damping"][None]),
+            "viscous_damping": (("omega", "dof", "dof_j"), r["viscous_damping"][None]),
+            "far_field": (dims_b + ("component",), r["far_field"][None]),
+            "near_field": (dims_b + ("component",), r["near_field"][None]),
+            "near_field_parts": (dims_b + ("part", "component"), r["near_field_parts"][None]),
+            "sectional_moments": (dims_b + ("axis", "order"), r["sectional"][None]),
+            "wavenumber": (("omega",), [r["wavenumber"]]),
+        },
+        coords={"omega": w, "beta": r["beta"], "dof": list(DOFS), "dof_j": list(DOFS), "component": list(_COMPONENTS),
+                "part": list(_PARTS), "axis": ["x", "y"], "order": [0, 1, 2]},
+    )
+    return ds
+
+
+def _attrs(mesh, body, rho, g, water_depth, fixed, theta_step):
+    cpt = require_capytaine()
+    import jaxtow
+
+    return {
+        "mesh_name": mesh.name, "mesh_params": json.dumps(mesh.params), "n_panels": mesh.n_panels,
+        "n_lid_panels": int(len(mesh.lid_faces)), "panel_size_m": mesh.panel_size,
+        "solver": "capytaine.BEMSolver(method='indirect'), Delhommeau Green function, lid for irregular frequencies",
+        "capytaine_version": cpt.__version__, "jaxtow_version": jaxtow.__version__,
+        "rho": rho, "g": g, "water_depth": str(water_depth), "fixed_body": int(fixed),
+        "mass_kg": float(body.mass), "cog_m": json.dumps([float(c) for c in body.cog]),
+        "inertia_kgm2": json.dumps([float(v) for v in np.diag(body.inertia)]),
+        "body_notes": json.dumps(body.notes), "kochin_step_deg": theta_step,
+        "far_field_method": "capytaine.post_pro.far_field_mean_drift_force (Kochin functions)",
+        "near_field_method": "Pinkster pressure integration, parts I-IV (jaxtow.bem.nearfield); surface velocity "
+                             "from a least-squares gradient of the surface potential",
+        "conventions": "per unit wave amplitude squared, SI; body axes x forward, y port, z up from the waterline; "
+                       "beta = 0 head seas, CCW, direction waves come from; yaw about the CoG's vertical axis; "
+                       "complex amplitudes with exp(-i omega t)",
+        "assumptions": json.dumps({k: presets.ASSUMPTIONS[k]["note"] for k in ("cog_z", "radii_of_gyration",
+                                                                                   "roll_damping")}),
+    }
+
+
+def bem_drift(mesh: HullMesh, omega, beta, *, body: RigidBody | None = None, cog_z: float | None = None,
+              radii=None, roll_damping: float | None = None, rho: float = RHO_SEA, g: float = G,
+              water_depth: float = math.inf, fixed: bool = False, cache_dir=None, progress: bool = False,
+              theta_step: float = 0.5):
+    """First-order solution, RAOs and far-/near-field mean drift over (ω, β) for ``mesh``,
+    one frequency at a time, as an xarray Dataset (variables in `_frequency_dataset`, the
+    mesh, solver, versions and assumptions in its attributes).
+
+    ``omega`` rad/s (> 0), ``beta`` rad in jaxtow's convention. ``body`` defaults to
+    `rigid_body(mesh, cog_z, radii=..., roll_damping=...)`. With ``cache_dir`` each frequency
+    is stored in its own NetCDF file named by a hash of every input, so a rerun (or an
+    interrupted run) only solves what is missing. ``progress`` prints a bar on stderr.
+    """
+    import xarray as xr
+
+    from .._progress import Progress
+
+    omega = np.atleast_1d(np.asarray(omega, float))
+    beta = np.atleast_1d(np.asarray(beta, float))
+    if omega.ndim != 1 or not np.all(omega > 0) or not np.all(np.isfinite(omega)):
+        raise ValueError("parameter 'omega' must be a 1-D array of positive frequencies [rad/s]")
+    if not np.all(np.diff(beta) > 0):
+        raise ValueError("parameter 'beta' must be strictly ascending [rad]")
+    require_capytaine()
+    if body is None and not fixed:
+        body = rigid_body(mesh, cog_z, radii=radii, roll_damping=roll_damping, rho=rho, g=g)
+    if body is None:
+        body = RigidBody(0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True})
+    cache = None if cache_dir is None else Path(cache_dir)
+    if cache is not None:
+        cache.mkdir(parents=True, exist_ok=True)
+    bar = Progress(omega.size, label=f"bem {mesh.name} ({mesh.n_panels} panels)", enabled=progress)
+    parts = []
+    for w in np.sort(omega):
+        path = None if cache is None else cache / f"{mesh.name}_{_cache_key(mesh, body, w, beta, rho, g, water_depth, theta_step)}.nc"
+        if path is not None and path.exists():
+            ds = xr.load_dataset(path)
+        else:
+            r = solve_frequency(mesh, body, w, beta, rho=rho, g=g, water_depth=water_depth, fixed=fixed,
+                                theta_step=theta_step)
+            ds = _frequency_dataset(r)
+            if path is not None:
+                ds.to_netcdf(path)
+        parts.append(ds)
+        bar.update()
+    out = xr.concat(parts, dim="omega", data_vars="minimal", coords="minimal", compat="override",
+                    join="override")
+    out.attrs.update(_attrs(mesh, body, rho, g, water_depth, fixed, theta_step))
+    return out
+
+
+def rao(ds):
+    """Complex RAOs (omega, beta, dof) from a `bem_drift` dataset [m/m, rad/m]."""
+    return ds["rao_real"] + 1j * ds["rao_imag"]
+
+
+def qtf_from_bem(ds, method: str = "far_field", *, symmetric: bool = False):
+    """A jaxtow `QTF` (SI, per ζa²) from a `bem_drift` dataset; ``method`` 'far_field' or
+    'near_field'. ``symmetric=True`` (a port-starboard symmetric hull with β from 0) completes
+    the table to negative headings with `QTF.symmetric`, setting the head-sea (and
+    following-sea) sway and yaw, which vanish by symmetry, to exactly zero."""
+    from ..drift.qtf import QTF
+
+    if method not in ("far_field", "near_field"):
+        raise ValueError(f"parameter 'method' must be 'far_field' or 'near_field', got {method!r}")
+    v = np.asarray(ds[method].transpose("omega", "beta", "component"))
+    w, b = np.asarray(ds.omega, float), np.asarray(ds.beta, float)
+    fx, fy, nz = v[..., 0], v[..., 1].copy(), v[..., 2].copy()
+    if symmetric:
+        for j in np.flatnonzero(np.isclose(b, 0.0) | np.isclose(np.abs(b), math.pi)):
+            fy[:, j] = 0.0
+            nz[:, j] = 0.0
+        return QTF.symmetric(omega=w, beta=b, fx=fx, fy=fy, nz=nz)
+    return QTF(omega=w, beta=b, fx=fx, fy=fy, nz=nz)
+
+
+def qtf_attrs(ds, method: str) -> dict:
+    """The provenance attributes to store with a QTF made by `qtf_from_bem`."""
+    keep = {k: v for k, v in ds.attrs.items()}
+    keep["qtf_method"] = method
+    keep["qtf_source"] = f"jaxtow.bem {method.replace('_', '-')} mean drift"
+    return keep
+
+
+def mesh_convergence(build_mesh, panel_sizes, omega, beta, *, length: float | None = None, **kwargs):
+    """Mesh-convergence study (thesis appendix B.1): `bem_drift` for each panel size
+    (``build_mesh(panel_size) -> HullMesh``), and the relative MSE (eq. 3.8 as in
+    `jaxtow.drift.compare`) of each mesh's far- and near-field surge and sway against the finest
+    mesh's far field, per zone and overall, and of each mesh's near field against its own far
+    field. Returns (datasets by panel size, summary Dataset over panel_size with
+    ``panels_per_length``, ``panels_per_breadth``, ``mse`` (panel_size, drift_method, component,
+    zone) and ``near_vs_far`` (panel_size, component, zone))."""
+    import jax.numpy as jnp
+    import xarray as xr
+
+    from ..drift.methods import ZONE_NAMES, zone
+    from ..drift.compare import relative_mse
+
+    sizes = sorted((float(p) for p in panel_sizes), reverse=True)
+    runs = {p: bem_drift(build_mesh(p), omega, beta, **kwargs) for p in sizes}
+    finest = runs[sizes[-1]]
+    first = build_mesh(sizes[-1])
+    L = float(np.ptp(first.vertices[:, 0])) if length is None else float(length)
+    B = float(np.ptp(first.vertices[:, 1]))
+    zones = np.asarray(zone(jnp.asarray(np.asarray(finest.omega, float)), L))
+    names = list(ZONE_NAMES) + ["all"]
+    mse = np.full((len(sizes), 2, 2, len(names)), np.nan)
+    agree = np.full((len(sizes), 2, len(names)), np.nan)
+    for i, p in enumerate(sizes):
+        for c in range(2):
+            est = np.asarray(runs[p]["near_field"].isel(component=c).transpose("omega", "beta"))
+            base = np.asarray(runs[p]["far_field"].isel(component=c).transpose("omega", "beta"))
+            for z, name in enumerate(names):
+                mask = np.ones_like(base, bool) if name == "all" else (zones == z)[:, None] & np.ones_like(base, bool)
+                if mask.any() and np.any(base[mask] != 0):
+                    agree[i, c, z] = relative_mse(est, base, mask)
+        for m, method in enumerate(("far_field", "near_field")):
+            for c in range(2):
+                est = np.asarray(runs[p][method].isel(component=c).transpose("omega", "beta"))
+                base = np.asarray(finest["far_field"].isel(component=c).transpose("omega", "beta"))
+                for z, name in enumerate(names):
+                    mask = np.ones_like(base, bool) if name == "all" else (zones == z)[:, None] & np.ones_like(base, bool)
+                    if mask.any() and np.any(base[mask] != 0):
+                        mse[i, m, c, z] = relative_mse(est, base, mask)
+    summary = xr.Dataset(
+        {"mse": (("panel_size", "drift_method", "component", "zone"), mse),
+         "near_vs_far": (("panel_size", "component", "zone"), agree),
+         "panels_per_length": (("panel_size",), [L / p for p in sizes]),
+         "panels_per_breadth": (("panel_size",), [B / p for p in sizes]),
+         "n_panels": (("panel_size",), [int(runs[p].attrs["n_panels"]) for p in sizes])},
+        coords={"panel_size": sizes, "drift_method": ["far_field", "near_field"], "component": ["fx", "fy"], "zone": names},
+        attrs={"base": f"far field of the finest mesh ({sizes[-1]} m)", "length_m": L, "breadth_m": B},
+    )
+    return runs, summary
+
+
+def box_barge_drift(length: float, breadth: float, draft: float, cog_z: float, omega, beta, *,
+                    panel_size: float = 2.0, rake: float = 0.0, **kwargs):
+    """Panel-method mean drift of a (raked) box barge: `BEMDrift` with ``far_field`` and
+    ``near_field`` jaxtow `QTF` (SI per ζa², β = 0 head seas; completed by symmetry when β
+    starts at 0) and the full ``dataset``. ``cog_z`` is the CoG height above the keel [m];
+    other keywords go to `bem_drift` (cache_dir, progress, radii, roll_damping, ...)."""
+    from .meshes import raked_barge_mesh
+
+    mesh = raked_barge_mesh(length, breadth, draft, rake, panel_size=panel_size,
+                            name="box_barge" if rake == 0 else "raked_barge")
+    ds = bem_drift(mesh, omega, beta, cog_z=cog_z, **kwargs)
+    sym = bool(np.isclose(float(np.min(ds.beta)), 0.0))
+    return BEMDrift(qtf_from_bem(ds, "far_field", symmetric=sym), qtf_from_bem(ds, "near_field", symmetric=sym), ds)
+
+
+@dataclasses.dataclass(frozen=True)
+class BEMDrift:
+    """Far-field and near-field `QTF` of one hull and the `bem_drift` dataset behind them."""
+
+    far_field: object
+    near_field: object
+    dataset: object
