@@ -71,8 +71,9 @@ __version__ = "0.1.0"
 
 
 def __getattr__(name):
-    # `jt.io` and `jt.plotting` load on first use: the numerics never import xarray/matplotlib
-    if name in ("io", "plotting"):
+    # `jt.io`, `jt.plotting` and `jt.bem` load on first use: the numerics never import
+    # xarray/matplotlib, and nothing imports Capytaine until a panel solve is asked for
+    if name in ("io", "plotting", "bem", "cli"):
         import importlib
 
         return importlib.import_module(f".{name}", __name__)

@@ -107,6 +107,11 @@ def cmd_bem(args):
           f"x {beta.size} headings")
     ds = bem.bem_drift(mesh, omega, beta, cache_dir=cache, progress=not args.quiet, **kw)
     ds.to_netcdf(out / "bem.nc")
+    bad = ds.omega.values[~ds.resolved.values]
+    if bad.size:
+        print(f"warning: {bad.size} frequencies from {bad.min():.2f} rad/s have fewer than "
+              f"{bem.solve.MIN_PANELS_PER_WAVELENGTH:g} panels per wavelength (dataset variable 'resolved'); "
+              "use a smaller --panel-size")
     from .io import save_qtf
 
     sym = bool(np.isclose(float(beta[0]), 0.0))

@@ -208,7 +208,9 @@ def test_qtf_output_cache_and_attributes(box_db, tmp_path):
 
 
 @needs_capytaine
-def test_cli_bem_writes_qtf_databases_and_figures(tmp_path):
+def test_cli_bem_writes_qtf_databases_and_figures(tmp_path, capsys):
+    import xarray as xr
+
     cfg = tmp_path / "tiny.toml"
     cfg.write_text('[hull]\nkind = "barge2"\npanel_size = 6.0\n[mass]\ncog_z = 10.0\n'
                    '[waves]\nomega = [0.4, 1.6, 3]\nbeta_deg = [0, 30, 2]\n')
@@ -219,6 +221,9 @@ def test_cli_bem_writes_qtf_databases_and_figures(tmp_path):
         assert (out / f).exists(), f
     s = json.loads((out / "summary.json").read_text())
     assert s["mesh"] == "barge2_raked" and "roll_damping" in s["assumptions"]
+    ds = xr.load_dataset(out / "bem.nc")
+    assert bool(ds.resolved.sel(omega=0.4)) and not bool(ds.resolved.sel(omega=1.6))  # 6 m panels, λ = 24 m
+    assert "fewer than 6 panels per wavelength" in capsys.readouterr().out
     q = jt.io.load_qtf(out / "qtf_near_field.nc")
     assert np.asarray(q.beta).min() == pytest.approx(-math.radians(30))
     with pytest.raises(SystemExit, match="unknown key"):
@@ -242,9 +247,10 @@ def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it():
     assert r.returncode == 0, r.stderr
     assert "ERR" in r.stdout and "pip install 'jaxtow[bem]'" in r.stdout
     assert "EXIT jaxtow bem:" in r.stdout and "pip install" in r.stdout.split("EXIT")[1]
-    r = subprocess.run([sys.executable, "-c", "import jaxtow, jaxtow.bem, sys; print('capytaine' in sys.modules)"],
+    r = subprocess.run([sys.executable, "-c", "import jaxtow as jt, sys; jt.bem.box_barge_mesh(); "
+                        "print('capytaine' in sys.modules, callable(jt.bem.box_barge_drift))"],
                        capture_output=True, text=True, timeout=300)
-    assert r.stdout.strip() == "False"
+    assert r.stdout.strip() == "False True"
 
 
 # ---------------------------------------------------------------- converged mesh (slow)

@@ -39,6 +39,8 @@ from .nearfield import apply_gradient, near_field_drift, surface_gradient_operat
 INSTALL_HINT = ("jaxtow.bem needs the optional panel-method extra (Capytaine): "
                 "pip install 'jaxtow[bem]'  (or: pip install capytaine)")
 DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
+#: fewer panels per wavelength than this flags a frequency as unresolved (``resolved`` in the dataset)
+MIN_PANELS_PER_WAVELENGTH = 6.0
 
 
 def require_capytaine():
@@ -370,6 +372,11 @@ def bem_drift(mesh: HullMesh, omega, beta, *, body: RigidBody | None = None, cog
     out = xr.concat(parts, dim="omega", data_vars="minimal", coords="minimal", compat="override",
                     join="override")
     out.attrs.update(_attrs(mesh, body, rho, g, water_depth, fixed, theta_step))
+    # validity: waves must be resolved by the panels (about 6 or more panels per wavelength)
+    out["panels_per_wavelength"] = 2 * math.pi / out["wavenumber"] / mesh.panel_size
+    out["resolved"] = out["panels_per_wavelength"] >= MIN_PANELS_PER_WAVELENGTH
+    out["resolved"].attrs["note"] = (f"wavelength / nominal panel size >= {MIN_PANELS_PER_WAVELENGTH}; "
+                                     "results at unresolved frequencies are unreliable")
     return out
 
 
