@@ -79,7 +79,7 @@ def test_near_field_integration_of_the_exact_cylinder_fields_equals_the_closed_f
     a fine wall discretisation reproduces the closed-form mean drift (finite and deep water)."""
     a = 10.0
     for depth, omega in ((20.0, 0.6), (20.0, 1.4), (math.inf, 1.0)):
-        nth, nz = 720, 400
+        nth, nz = 360, 160
         th = (np.arange(nth) + 0.5) * 2 * math.pi / nth
         zmax = depth if math.isfinite(depth) else 60.0 / reference.wavenumber(omega, depth)
         zg, wz = np.polynomial.legendre.leggauss(nz)
@@ -236,21 +236,21 @@ def test_cli_bem_writes_qtf_databases_and_figures(tmp_path, capsys):
 
 def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it():
     code = (
-        "import sys; sys.modules['capytaine'] = None\n"  # make 'import capytaine' fail
-        "import jaxtow as jt, jaxtow.bem as bem\n"
+        "import sys\nimport jaxtow as jt\njt.bem.box_barge_mesh()\n"
+        "print('IMPORTED', 'capytaine' in sys.modules, callable(jt.bem.box_barge_drift))\n"
+        "sys.modules['capytaine'] = None\n"  # from here 'import capytaine' fails
+        "import jaxtow.bem as bem\n"
         "m = bem.box_barge_mesh(panel_size=10.0); print(m.n_panels)\n"
         "assert not bem.available()\n"
         "try:\n    bem.bem_drift(m, [1.0], [0.0])\nexcept ImportError as e:\n    print('ERR', e)\n"
-        "try:\n    from jaxtow.cli import main; main(['bem', 'barge1', '--out', 'x'])\nexcept SystemExit as e:\n    print('EXIT', e)\n"
+        "try:\n    from jaxtow.cli import main; main(['bem', 'barge1', '--out', 'x'])\nexcept SystemExit as e:\n"
+        "    print('EXIT', e)\n"
     )
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=False)
     assert r.returncode == 0, r.stderr
+    assert "IMPORTED False True" in r.stdout  # importing jaxtow (and its meshes) never imports Capytaine
     assert "ERR" in r.stdout and "pip install 'jaxtow[bem]'" in r.stdout
     assert "EXIT jaxtow bem:" in r.stdout and "pip install" in r.stdout.split("EXIT")[1]
-    r = subprocess.run([sys.executable, "-c", "import jaxtow as jt, sys; jt.bem.box_barge_mesh(); "
-                        "print('capytaine' in sys.modules, callable(jt.bem.box_barge_drift))"],
-                       capture_output=True, text=True, timeout=300)
-    assert r.stdout.strip() == "False True"
 
 
 # ---------------------------------------------------------------- converged mesh (slow)

@@ -41,6 +41,8 @@ INSTALL_HINT = ("jaxtow.bem needs the optional panel-method extra (Capytaine): "
 DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
 #: fewer panels per wavelength than this flags a frequency as unresolved (``resolved`` in the dataset)
 MIN_PANELS_PER_WAVELENGTH = 6.0
+#: bump when what a cached frequency holds, or how it is computed, changes
+_CACHE_VERSION = "nf-lsq-1"
 
 
 def require_capytaine():
@@ -132,6 +134,11 @@ def rigid_body(mesh: HullMesh, cog_z: float | None = None, *, radii=None, roll_d
     return RigidBody(m, cog, inertia, C, D, notes)
 
 
+def _fixed_body() -> RigidBody:
+    """Placeholder body for a fixed (diffraction-only) computation: no mass, no stiffness."""
+    return RigidBody(0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True})
+
+
 def _roll_damping(body: RigidBody, a44: float) -> np.ndarray:
     """Dimensional viscous damping: B44 = 2 ζ sqrt(C44 (I44 + A44(ω)))."""
     D = np.zeros((6, 6))
@@ -177,13 +184,14 @@ def _theta_grid(step_deg: float = 0.5):
     return np.radians(np.arange(-2, n + 3) * step_deg)
 
 
-def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step):
+def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
     cpt = require_capytaine()
     h = hashlib.sha256()
     for arr in (mesh.vertices, mesh.faces, mesh.lid_vertices, mesh.lid_faces, body.cog, body.inertia,
                 body.stiffness, body.damping, np.asarray(beta, float)):
         h.update(np.ascontiguousarray(arr).tobytes())
-    h.update(json.dumps([float(body.mass), float(omega), rho, g, str(depth), theta_step, cpt.__version__, 2]).encode())
+    h.update(json.dumps([float(body.mass), float(omega), rho, g, str(depth), theta_step, bool(fixed), cpt.__version__,
+                         _CACHE_VERSION]).encode())
     return h.hexdigest()[:20]
 
 
@@ -200,7 +208,7 @@ def solve_frequency(mesh: HullMesh, body: RigidBody | None, omega: float, beta, 
     if body is None:
         if not fixed:
             raise ValueError("parameter 'body' is needed unless fixed=True")
-        body = RigidBody(0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True})
+        body = _fixed_body()
     hull, lid = to_capytaine_mesh(mesh)
     mass_kw = dict(center_of_mass=body.cog, mass=body.mass) if body.mass > 0 else {}
     cbody = cpt.FloatingBody(mesh=hull, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=body.cog),
@@ -351,14 +359,15 @@ def bem_drift(mesh: HullMesh, omega, beta, *, body: RigidBody | None = None, cog
     if body is None and not fixed:
         body = rigid_body(mesh, cog_z, radii=radii, roll_damping=roll_damping, rho=rho, g=g)
     if body is None:
-        body = RigidBody(0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True})
+        body = _fixed_body()
     cache = None if cache_dir is None else Path(cache_dir)
     if cache is not None:
         cache.mkdir(parents=True, exist_ok=True)
     bar = Progress(omega.size, label=f"bem {mesh.name} ({mesh.n_panels} panels)", enabled=progress)
     parts = []
     for w in np.sort(omega):
-        path = None if cache is None else cache / f"{mesh.name}_{_cache_key(mesh, body, w, beta, rho, g, water_depth, theta_step)}.nc"
+        key = _cache_key(mesh, body, w, beta, rho, g, water_depth, theta_step, fixed)
+        path = None if cache is None else cache / f"{mesh.name}_{key}.nc"
         if path is not None and path.exists():
             ds = xr.load_dataset(path)
         else:
