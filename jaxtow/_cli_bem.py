@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from ._cli_config import config_dispatch
+from .units import G, RHO_SEA
 from ._cli_config import read_config as _read_config
 
 BUILTIN = {"barge1": "bem_barge1.toml", "barge2": "bem_barge2.toml"}
@@ -124,7 +125,7 @@ def cmd_bem(args):
     B = float(np.ptp(mesh.vertices[:, 1]))
     head = ds.sel(beta=float(beta[0]))
     summary["short_wave_surge_head_seas"] = {
-        m: float(head[m].sel(component="fx").isel(omega=-1)) / (1025.0 * 9.81 * B) for m in ("far_field", "near_field")}
+        m: float(head[m].sel(component="fx").isel(omega=-1)) / (RHO_SEA * G * B) for m in ("far_field", "near_field")}
     from .drift.compare import relative_mse_by_zone
 
     for c in ("fx", "fy"):

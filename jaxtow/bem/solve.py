@@ -444,24 +444,21 @@ def mesh_convergence(build_mesh, panel_sizes, omega, beta, *, length: float | No
     B = float(np.ptp(first.vertices[:, 1]))
     zones = np.asarray(zone(jnp.asarray(np.asarray(finest.omega, float)), L))
     names = list(ZONE_NAMES) + ["all"]
-    mse = np.full((len(sizes), 2, 2, len(names)), np.nan)
-    agree = np.full((len(sizes), 2, len(names)), np.nan)
-    for i, p in enumerate(sizes):
-        for c in range(2):
-            est = np.asarray(runs[p]["near_field"].isel(component=c).transpose("omega", "beta"))
-            base = np.asarray(runs[p]["far_field"].isel(component=c).transpose("omega", "beta"))
-            for z, name in enumerate(names):
-                mask = np.ones_like(base, bool) if name == "all" else (zones == z)[:, None] & np.ones_like(base, bool)
-                if mask.any() and np.any(base[mask] != 0):
-                    agree[i, c, z] = relative_mse(est, base, mask)
-        for m, method in enumerate(("far_field", "near_field")):
-            for c in range(2):
-                est = np.asarray(runs[p][method].isel(component=c).transpose("omega", "beta"))
-                base = np.asarray(finest["far_field"].isel(component=c).transpose("omega", "beta"))
-                for z, name in enumerate(names):
-                    mask = np.ones_like(base, bool) if name == "all" else (zones == z)[:, None] & np.ones_like(base, bool)
-                    if mask.any() and np.any(base[mask] != 0):
-                        mse[i, m, c, z] = relative_mse(est, base, mask)
+    def by_zone(est, base):
+        out = np.full(len(names), np.nan)
+        for z, name in enumerate(names):
+            mask = np.ones_like(base, bool) if name == "all" else (zones == z)[:, None] & np.ones_like(base, bool)
+            if mask.any() and np.any(base[mask] != 0):
+                out[z] = relative_mse(est, base, mask)
+        return out
+
+    def comp(ds, method, c):
+        return np.asarray(ds[method].isel(component=c).transpose("omega", "beta"))
+
+    mse = np.array([[[by_zone(comp(runs[p], m, c), comp(finest, "far_field", c)) for c in range(2)]
+                     for m in ("far_field", "near_field")] for p in sizes])
+    agree = np.array([[by_zone(comp(runs[p], "near_field", c), comp(runs[p], "far_field", c)) for c in range(2)]
+                      for p in sizes])
     summary = xr.Dataset(
         {"mse": (("panel_size", "drift_method", "component", "zone"), mse),
          "near_vs_far": (("panel_size", "component", "zone"), agree),
