@@ -17,13 +17,28 @@ def vector_field(y, p):
     T = p["EA"] * max(l / p["l0"] - 1.0, 0.0)
     a = g + psi
     sa, ca = math.sin(a), math.cos(a)
-    X = -p["R0"] * u * abs(u) + p["Xvv"] * v * v + p["Xrr"] * r * r + T * ca + (p["m"] + p["a22"]) * v * r
-    Y = p["Yv"] * v + p["Yr"] * r + p["Yvvv"] * v**3 + p["Yrrr"] * r**3 - T * sa - (p["m"] + p["a11"]) * u * r
+    X = (
+        -p["R0"] * u * abs(u)
+        + p["Xvv"] * v * v
+        + p["Xrr"] * r * r
+        + T * ca
+        + (p["m"] + p["a22"]) * v * r
+    )
+    Y = (
+        p["Yv"] * v
+        + p["Yr"] * r
+        + p["Yvvv"] * v**3
+        + p["Yrrr"] * r**3
+        - T * sa
+        - (p["m"] + p["a11"]) * u * r
+    )
     N = p["Nv"] * v + p["Nr"] * r + p["Nvvv"] * v**3 - T * p["xp"] * sa
     xp = p["xp"]
     ldot = -u * ca + v * sa + math.cos(g) + r * xp * sa
     gdot = (u * sa + v * ca - math.sin(g) + r * xp * ca) / l
-    return np.array([X / (p["m"] + p["a11"]), Y / (p["m"] + p["a22"]), N / (p["Izz"] + p["a66"]), ldot, gdot, r])
+    return np.array(
+        [X / (p["m"] + p["a11"]), Y / (p["m"] + p["a22"]), N / (p["Izz"] + p["a66"]), ldot, gdot, r]
+    )
 
 
 def fd_jacobian(y, p, h=1e-6, field=None):

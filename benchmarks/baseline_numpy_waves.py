@@ -13,9 +13,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.optimize import fsolve
-
 from baseline_numpy import fd_jacobian, vector_field as calm_field
+from scipy.optimize import fsolve
 
 G = 9.80665
 
@@ -23,10 +22,14 @@ G = 9.80665
 def _slopes(x, y, periodic=False):
     h = np.diff(x)
     h0, h1 = h[:-1], h[1:]
-    mid = (h0**2 * y[..., 2:] - h1**2 * y[..., :-2] + (h1**2 - h0**2) * y[..., 1:-1]) / (h0 * h1 * (h0 + h1))
+    mid = (h0**2 * y[..., 2:] - h1**2 * y[..., :-2] + (h1**2 - h0**2) * y[..., 1:-1]) / (
+        h0 * h1 * (h0 + h1)
+    )
     if periodic:
         a, b = h[-1], h[0]
-        first = last = (a**2 * y[..., 1] - b**2 * y[..., -2] + (b**2 - a**2) * y[..., 0]) / (a * b * (a + b))
+        first = last = (a**2 * y[..., 1] - b**2 * y[..., -2] + (b**2 - a**2) * y[..., 0]) / (
+            a * b * (a + b)
+        )
     else:
         first = (y[..., 1] - y[..., 0]) / h[0]
         last = (y[..., -1] - y[..., -2]) / h[-1]
@@ -39,8 +42,12 @@ def _hermite(x, y, m, xq):
     h = x[i + 1] - x[i]
     t = (xq - x[i]) / h
     t2, t3 = t * t, t * t * t
-    return ((2 * t3 - 3 * t2 + 1) * y[..., i] + (t3 - 2 * t2 + t) * h * m[..., i]
-            + (-2 * t3 + 3 * t2) * y[..., i + 1] + (t3 - t2) * h * m[..., i + 1])
+    return (
+        (2 * t3 - 3 * t2 + 1) * y[..., i]
+        + (t3 - 2 * t2 + t) * h * m[..., i]
+        + (-2 * t3 + 3 * t2) * y[..., i + 1]
+        + (t3 - t2) * h * m[..., i + 1]
+    )
 
 
 class NumpyQTF:
@@ -90,8 +97,14 @@ def equilibria(p, starts=(-1.0, -0.5, -0.2, 0.0, 0.2, 0.5, 1.0)):
     for psi0 in starts:
         y0 = np.array([math.cos(psi0), -math.sin(psi0), 0.0, p["l0"] * 1.01, -psi0 * 0.5, psi0])
         y, info, ok, _ = fsolve(lambda x: vector_field(x, p), y0, full_output=True, xtol=1e-12)
-        if ok == 1 and np.max(np.abs(vector_field(y, p))) < 1e-9 and y[3] > p["l0"] and math.cos(y[4]) > 0 \
-                and abs(y[5]) < math.pi / 2 and not any(abs(y[5] - r[5]) < 1e-6 for r in roots):
+        if (
+            ok == 1
+            and np.max(np.abs(vector_field(y, p))) < 1e-9
+            and y[3] > p["l0"]
+            and math.cos(y[4]) > 0
+            and abs(y[5]) < math.pi / 2
+            and not any(abs(y[5] - r[5]) < 1e-6 for r in roots)
+        ):
             roots.append(y)
     return sorted(roots, key=lambda r: r[5])
 

@@ -37,17 +37,31 @@ def main(argv=None):
     omega = np.linspace(0.3, 2.1, args.n_omega)
     beta = np.radians([0.0, 15.0, 90.0])
     t0 = time.perf_counter()
-    runs, summary = bem.mesh_convergence(lambda p: bem.box_barge_mesh(panel_size=p), args.sizes, omega, beta,
-                                         cache_dir=args.cache or out / "cache", progress=True)
+    runs, summary = bem.mesh_convergence(
+        lambda p: bem.box_barge_mesh(panel_size=p),
+        args.sizes,
+        omega,
+        beta,
+        cache_dir=args.cache or out / "cache",
+        progress=True,
+    )
     wall = time.perf_counter() - t0
     summary.to_netcdf(out / "convergence.nc")
-    rep = {"wall_s": wall, "omega": omega.tolist(), "beta_deg": [0, 15, 90], "panel_size": [], "n_panels": []}
+    rep = {
+        "wall_s": wall,
+        "omega": omega.tolist(),
+        "beta_deg": [0, 15, 90],
+        "panel_size": [],
+        "n_panels": [],
+    }
     for p in summary.panel_size.values:
         rep["panel_size"].append(float(p))
         rep["n_panels"].append(int(summary.n_panels.sel(panel_size=p)))
         for c in ("fx", "fy"):
             nv = summary.near_vs_far.sel(panel_size=p, component=c)
-            rep.setdefault(f"near_vs_far_{c}", []).append({z: float(nv.sel(zone=z)) for z in summary.zone.values})
+            rep.setdefault(f"near_vs_far_{c}", []).append(
+                {z: float(nv.sel(zone=z)) for z in summary.zone.values}
+            )
     (out / "convergence.json").write_text(json.dumps(rep, indent=1))
     plot_mesh_convergence(summary, runs).savefig(out / "fig_B1_convergence.png", dpi=120)
     print(f"wall {wall:.0f} s")

@@ -22,9 +22,10 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 sys.path.insert(0, os.path.dirname(__file__))
-import jaxtow as jt  # noqa: E402
 from baseline_numpy import vector_field  # noqa: E402
-from jaxtow.simulate import initial_state, simulate_batch  # noqa: E402
+
+import jaxtow as jt  # noqa: E402
+from jaxtow._simulate import initial_state, simulate_batch  # noqa: E402
 
 
 def main(argv=None):
@@ -32,8 +33,13 @@ def main(argv=None):
     ap.add_argument("--runs", type=int, default=1024)
     ap.add_argument("--t1", type=float, default=100.0)
     ap.add_argument("--vessel", default="barge_2b")
-    ap.add_argument("--batch-sizes", type=int, nargs="+", default=[0, 64, 16, 1],
-                    help="simulate_batch batch_size values (0 = one vmap over all runs)")
+    ap.add_argument(
+        "--batch-sizes",
+        type=int,
+        nargs="+",
+        default=[0, 64, 16, 1],
+        help="simulate_batch batch_size values (0 = one vmap over all runs)",
+    )
     args = ap.parse_args(argv)
     rtol = atol = 1e-8
 
@@ -48,7 +54,7 @@ def main(argv=None):
     for bs in args.batch_sizes:
         b = None if bs == 0 else bs
         t = time.perf_counter()
-        sims = simulate_batch(model, y0s[:max(bs, 1)], t1=args.t1, n_save=2, batch_size=b)
+        sims = simulate_batch(model, y0s[: max(bs, 1)], t1=args.t1, n_save=2, batch_size=b)
         jax.block_until_ready(sims.ys)
         t_small = time.perf_counter() - t
         t = time.perf_counter()
@@ -61,25 +67,35 @@ def main(argv=None):
         t_run = time.perf_counter() - t
         results[bs] = (t_run, t_full - t_run, sims)
         steps = np.asarray(sims.n_steps)
-        print(f"jaxtow batch_size={'all' if bs == 0 else bs:>4}: run {t_run:7.3f} s, compile ~{t_full - t_run:5.2f} s "
-              f"(first small call {t_small:.2f} s); steps per run {steps.min()}..{steps.max()}; "
-              f"all succeeded: {bool(np.all(sims.success))}")
+        print(
+            f"jaxtow batch_size={'all' if bs == 0 else bs:>4}: run {t_run:7.3f} s, compile ~{t_full - t_run:5.2f} s "
+            f"(first small call {t_small:.2f} s); steps per run {steps.min()}..{steps.max()}; "
+            f"all succeeded: {bool(np.all(sims.success))}"
+        )
 
-    params = {n: float(getattr(vessel, n)) for n in jt.vessel.VESSEL_PARAMETERS}
+    params = {n: float(getattr(vessel, n)) for n in jt.VESSEL_PARAMETERS}
     params.update(EA=float(model.towline.EA), l0=2.5, xp=0.5)
     t = time.perf_counter()
     finals = []
     for y0 in y0s:  # the baseline's Python loop over runs
-        sol = solve_ivp(lambda t, y: vector_field(y, params), (0.0, args.t1), y0, method="RK45",
-                        rtol=rtol, atol=atol)
+        sol = solve_ivp(
+            lambda t, y: vector_field(y, params),
+            (0.0, args.t1),
+            y0,
+            method="RK45",
+            rtol=rtol,
+            atol=atol,
+        )
         finals.append(sol.y[:, -1])
     t_np = time.perf_counter() - t
     finals = np.array(finals)
     print(f"SciPy solve_ivp (RK45) loop: {t_np:.2f} s for {args.runs} runs")
     for bs, (t_run, t_comp, sims) in results.items():
         diff = float(np.max(np.abs(np.asarray(sims.ys[:, -1]) - finals)))
-        print(f"speed-up with batch_size={'all' if bs == 0 else bs:>4}: {t_np / t_run:7.1f}x   "
-              f"max |final-state difference| {diff:.1e}")
+        print(
+            f"speed-up with batch_size={'all' if bs == 0 else bs:>4}: {t_np / t_run:7.1f}x   "
+            f"max |final-state difference| {diff:.1e}"
+        )
 
 
 if __name__ == "__main__":

@@ -19,15 +19,17 @@ import jax
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(__file__))
-import jaxtow as jt  # noqa: E402
 from baseline_numpy import stability_map  # noqa: E402
-from jaxtow.parameters import with_parameters  # noqa: E402
-from jaxtow.sweep import point_kernel  # noqa: E402
+
+import jaxtow as jt  # noqa: E402
+from jaxtow._sweep import point_kernel  # noqa: E402
 
 
 def grid(n):
     side = int(round(np.sqrt(n)))
-    xp, l0 = np.meshgrid(np.linspace(0.0, 0.6, side), np.linspace(0.2, 2.5, n // side), indexing="ij")
+    xp, l0 = np.meshgrid(
+        np.linspace(0.0, 0.6, side), np.linspace(0.2, 2.5, n // side), indexing="ij"
+    )
     return xp.ravel(), l0.ravel()
 
 
@@ -41,21 +43,24 @@ def main(argv=None):
 
     vessel = jt.presets.VESSELS[args.vessel]()
     model = jt.TowModel(vessel=vessel, towline=jt.presets.default_towline())
-    params = {n: float(getattr(vessel, n)) for n in jt.vessel.VESSEL_PARAMETERS}
+    params = {n: float(getattr(vessel, n)) for n in jt.VESSEL_PARAMETERS}
     params["EA"] = float(model.towline.EA)
 
     # The same work as the baseline: analytic equilibria, Jacobian, eigenvalues, max Re λ
     # (the Routh-Hurwitz cross-check of the sweep kernel is left out, as in the baseline).
     @jax.jit
     def kernel(xp, l0):
-        return jax.vmap(lambda a, b: point_kernel(model, {"xp": a, "l0": b}, method="analytic",
-                                                  routh_hurwitz=False))(xp, l0)
+        return jax.vmap(
+            lambda a, b: point_kernel(
+                model, {"xp": a, "l0": b}, method="analytic", routh_hurwitz=False
+            )
+        )(xp, l0)
 
     def run_jax(xp, l0):
         outs = []
         for s in range(0, xp.size, args.chunk):  # chunks of a fixed shape: one compilation
-            a = np.resize(xp[s:s + args.chunk], args.chunk)
-            b = np.resize(l0[s:s + args.chunk], args.chunk)
+            a = np.resize(xp[s : s + args.chunk], args.chunk)
+            b = np.resize(l0[s : s + args.chunk], args.chunk)
             out = kernel(a, b)
             mr = np.asarray(jax.device_get(out["max_real"]))
             found = np.asarray(out["found"])
@@ -66,8 +71,10 @@ def main(argv=None):
     t = time.perf_counter()
     jax.block_until_ready(kernel.lower(xp0, l00).compile())
     compile_s = time.perf_counter() - t
-    print(f"jaxtow JIT compile: {compile_s:.2f} s (chunk {args.chunk}, device {jax.devices()[0].platform}, "
-          "LAPACK eigenvalues)")
+    print(
+        f"jaxtow JIT compile: {compile_s:.2f} s (chunk {args.chunk}, device {jax.devices()[0].platform}, "
+        "LAPACK eigenvalues)"
+    )
 
     results = []
     for n in args.sizes:
@@ -81,11 +88,20 @@ def main(argv=None):
         t_np = time.perf_counter() - t
         same_nan = np.array_equal(np.isnan(r_jax), np.isnan(r_np))
         diff = float(np.nanmax(np.abs(r_jax - r_np)))
-        res = dict(points=int(xp.size), jaxtow_s=t_jax, numpy_s=t_np, speedup=t_np / t_jax,
-                   max_abs_diff=diff, same_equilibria=bool(same_nan), compile_s=compile_s)
+        res = dict(
+            points=int(xp.size),
+            jaxtow_s=t_jax,
+            numpy_s=t_np,
+            speedup=t_np / t_jax,
+            max_abs_diff=diff,
+            same_equilibria=bool(same_nan),
+            compile_s=compile_s,
+        )
         results.append(res)
-        print(f"{xp.size:>7d} points: jaxtow {t_jax:8.3f} s | NumPy/SciPy loop {t_np:8.2f} s | "
-              f"speed-up {t_np / t_jax:7.1f}x | max |diff| {diff:.1e} | same equilibria: {same_nan}")
+        print(
+            f"{xp.size:>7d} points: jaxtow {t_jax:8.3f} s | NumPy/SciPy loop {t_np:8.2f} s | "
+            f"speed-up {t_np / t_jax:7.1f}x | max |diff| {diff:.1e} | same equilibria: {same_nan}"
+        )
     if args.json:
         with open(args.json, "w") as f:
             json.dump(results, f, indent=2)

@@ -25,18 +25,25 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).parent))
 
 
-import jaxtow as jt  # noqa: E402
-from jaxtow.sweep import make_specialised_kernel, sweep_arrays  # noqa: E402
-from jaxtow.study import barge2_wave_model, nearest_straight  # noqa: E402
 from baseline_numpy_waves import NumpyQTF, stability_map  # noqa: E402
+
+import jaxtow as jt  # noqa: E402
+from jaxtow._sweep import make_specialised_kernel, sweep_arrays  # noqa: E402
+from jaxtow.study import barge2_wave_model, nearest_straight  # noqa: E402
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("--n", type=int, default=200, help="points per axis (n × n map)")
     ap.add_argument("--subset", type=int, default=60, help="points timed with the NumPy/SciPy loop")
-    ap.add_argument("--n-grid", type=int, default=401,
-                    help="heading-scan points over ±90° (401: 0.45° brackets, each root refined to machine precision)")
+    ap.add_argument(
+        "--n-grid",
+        type=int,
+        default=401,
+        help="heading-scan points over ±90° (401: 0.45° brackets, each root refined to machine precision)",
+    )
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
 
@@ -45,7 +52,9 @@ def main(argv=None):
     l0 = np.linspace(0.3, 3.0, args.n)
     omega = np.linspace(0.3, 2.0, args.n)
     kopts = dict(n_grid=args.n_grid, max_roots=4, routh_hurwitz=False, eig_method="lapack")
-    opts = dict(kopts, chunk_size=8192, kernel=make_specialised_kernel(model, method="numerical", **kopts))
+    opts = dict(
+        kopts, chunk_size=8192, kernel=make_specialised_kernel(model, method="numerical", **kopts)
+    )
 
     grid = {"l0": l0, "external.omega": omega}
     t = time.perf_counter()
@@ -57,15 +66,25 @@ def main(argv=None):
     compile_s = first - t_jax
     mr = nearest_straight(arrays)
     npts = args.n * args.n
-    print(f"jaxtow: {npts} points in {t_jax:.2f} s ({1e3 * t_jax / npts:.3f} ms/point); "
-          f"JIT compile ≈ {compile_s:.1f} s (first call minus second)")
+    print(
+        f"jaxtow: {npts} points in {t_jax:.2f} s ({1e3 * t_jax / npts:.3f} ms/point); "
+        f"JIT compile ≈ {compile_s:.1f} s (first call minus second)"
+    )
 
     ves = model.vessel
-    params = {n: float(getattr(ves, n)) for n in jt.vessel.VESSEL_PARAMETERS}
+    params = {n: float(getattr(ves, n)) for n in jt.VESSEL_PARAMETERS}
     sc = jt.presets.barge2_scales()
-    params.update(EA=float(model.towline.EA), xp=float(model.towline.xp), zeta_a=1.25, u_tug=sc.u_tug,
-                  force=sc.force, moment=sc.moment,
-                  qtf=NumpyQTF(np.asarray(qtf.omega), np.asarray(qtf.beta), np.asarray(qtf.values), qtf.periodic))
+    params.update(
+        EA=float(model.towline.EA),
+        xp=float(model.towline.xp),
+        zeta_a=1.25,
+        u_tug=sc.u_tug,
+        force=sc.force,
+        moment=sc.moment,
+        qtf=NumpyQTF(
+            np.asarray(qtf.omega), np.asarray(qtf.beta), np.asarray(qtf.values), qtf.periodic
+        ),
+    )
     rng = np.random.default_rng(0)
     idx = rng.choice(npts, size=args.subset, replace=False)
     L0, W = np.meshgrid(l0, omega, indexing="ij")
@@ -76,14 +95,28 @@ def main(argv=None):
     both = np.isfinite(r_np) & np.isfinite(r_jax)
     diff = float(np.max(np.abs(r_np[both] - r_jax[both]))) if both.any() else float("nan")
     per_np, per_jax = t_np / args.subset, t_jax / npts
-    res = dict(points=npts, jaxtow_s=t_jax, compile_s=compile_s, numpy_subset=args.subset, numpy_s=t_np,
-               numpy_s_per_point=per_np, jaxtow_s_per_point=per_jax, speedup=per_np / per_jax,
-               numpy_extrapolated_full_map_s=per_np * npts, max_abs_diff_subset=diff,
-               both_found=int(both.sum()), numpy_missed=int(np.sum(np.isnan(r_np) & np.isfinite(r_jax))))
-    print(f"NumPy/SciPy loop: {args.subset} points in {t_np:.2f} s ({1e3 * per_np:.1f} ms/point; "
-          f"the full map would take {per_np * npts / 60:.0f} min)")
-    print(f"speed-up per point: {per_np / per_jax:.0f}x | max |diff| of max Re lambda on the subset: {diff:.1e} "
-          f"({int(both.sum())} points found by both; fsolve missed {res['numpy_missed']})")
+    res = dict(
+        points=npts,
+        jaxtow_s=t_jax,
+        compile_s=compile_s,
+        numpy_subset=args.subset,
+        numpy_s=t_np,
+        numpy_s_per_point=per_np,
+        jaxtow_s_per_point=per_jax,
+        speedup=per_np / per_jax,
+        numpy_extrapolated_full_map_s=per_np * npts,
+        max_abs_diff_subset=diff,
+        both_found=int(both.sum()),
+        numpy_missed=int(np.sum(np.isnan(r_np) & np.isfinite(r_jax))),
+    )
+    print(
+        f"NumPy/SciPy loop: {args.subset} points in {t_np:.2f} s ({1e3 * per_np:.1f} ms/point; "
+        f"the full map would take {per_np * npts / 60:.0f} min)"
+    )
+    print(
+        f"speed-up per point: {per_np / per_jax:.0f}x | max |diff| of max Re lambda on the subset: {diff:.1e} "
+        f"({int(both.sum())} points found by both; fsolve missed {res['numpy_missed']})"
+    )
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=2))
     return res

@@ -1,80 +1,152 @@
 """jaxtow: a JAX differentiable hydrodynamics and towing-stability engine.
 
+The public API is this package and its public subpackages; every implementation module is
+private (a leading underscore) and re-exported here or by its subpackage:
+
+* ``jaxtow`` — the tow model (`TowModel`, `Vessel`, towlines), its vector field, equilibria,
+  stability, sweeps, time-domain runs and metrics, parameter paths, scales;
+* ``jaxtow.forces`` — environmental forces (the hook, waves, wind, combinations);
+* ``jaxtow.drift`` — wave-drift QTFs, wave-drift damping, sailing drift, waterline methods;
+* ``jaxtow.waves`` — spectra and irregular-sea integrals;
+* ``jaxtow.resistance`` — tow resistance, tug, operating speed;
+* ``jaxtow.continuation`` — branches, bifurcations, limit cycles;
+* ``jaxtow.design`` — towline and bridle design, sensitivities;
+* ``jaxtow.presets`` — the built-in vessels and every documented estimate;
+* ``jaxtow.study``, ``jaxtow.reports`` — the thesis studies and their claims;
+* ``jaxtow.io``, ``jaxtow.plotting``, ``jaxtow.bem``, ``jaxtow.cli`` — files, figures, the
+  optional panel-method pre-processor and the command line (loaded on first use).
+
 Importing jaxtow enables float64 in JAX (see `jaxtow._config`; set ``JAXTOW_ENABLE_X64=0``
 before import to opt out).
 """
+
+from importlib import import_module as _import_module
+from importlib.metadata import PackageNotFoundError as _NotFound, version as _version
 
 from ._config import enable_x64_from_environment as _enable_x64
 
 _enable_x64()
 
-from . import drift as drift
-from . import presets as presets
-from . import waves as waves
-from .dynamics import (
-    AbstractExternalForce as AbstractExternalForce,
-    CombinedForce as CombinedForce,
-    ConstantBodyForce as ConstantBodyForce,
-    NoExternalForce as NoExternalForce,
+from . import (
+    continuation as continuation,
+    design as design,
+    drift as drift,
+    forces as forces,
+    presets as presets,
+    reports as reports,
+    resistance as resistance,
+    study as study,
+    waves as waves,
+)
+from ._dynamics import (
     STATE_NAMES as STATE_NAMES,
+    ForceBreakdown as ForceBreakdown,
     TowModel as TowModel,
     force_breakdown as force_breakdown,
     sway_offset as sway_offset,
     vector_field as vector_field,
 )
-from .equilibrium import (
+from ._equilibrium import (
     Equilibria as Equilibria,
     analytic_equilibria as analytic_equilibria,
     equilibria as equilibria,
     equilibria_fixed as equilibria_fixed,
     heading_residual as heading_residual,
 )
-from .parameters import get_parameter as get_parameter, with_parameters as with_parameters
-from .stability import (
-    STABILITY_LABELS as STABILITY_LABELS,
-    characteristic_polynomial as characteristic_polynomial,
-    classify as classify,
-    eigenvalues as eigenvalues,
-    jacobian as jacobian,
-    max_real_eigenvalue as max_real_eigenvalue,
-    routh_hurwitz_stable as routh_hurwitz_stable,
-    stability as stability,
-)
-from .drift import QTF as QTF, wave_drift_damping as wave_drift_damping
-from .metrics import (
+from ._metrics import (
     damping_ratio as damping_ratio,
     fishtail_metrics as fishtail_metrics,
     force_history as force_history,
     trajectory as trajectory,
 )
-from .simulate import (
+from ._parameters import get_parameter as get_parameter, with_parameters as with_parameters
+from ._simulate import (
     Simulation as Simulation,
     initial_state as initial_state,
     simulate as simulate,
     simulate_batch as simulate_batch,
 )
-from . import design as design
-from . import resistance as resistance
-from . import study as study
-from .resistance import operating_speed as operating_speed, required_pull as required_pull
-from .sweep import sweep as sweep, sweep_arrays as sweep_arrays
-from .towline import (
+from ._stability import (
+    STABILITY_LABELS as STABILITY_LABELS,
+    STABILITY_TOL as STABILITY_TOL,
+    StabilityResult as StabilityResult,
+    characteristic_polynomial as characteristic_polynomial,
+    classify as classify,
+    eigenvalues as eigenvalues,
+    hurwitz_determinants as hurwitz_determinants,
+    jacobian as jacobian,
+    max_real_eigenvalue as max_real_eigenvalue,
+    routh_hurwitz_stable as routh_hurwitz_stable,
+    stability as stability,
+)
+from ._sweep import sweep as sweep, sweep_arrays as sweep_arrays
+from ._towline import (
     AbstractTowline as AbstractTowline,
     Bridle as Bridle,
     PowerLawTowline as PowerLawTowline,
     Towline as Towline,
 )
-from .units import Scales as Scales, froude_number as froude_number
-from .vessel import Vessel as Vessel
+from ._units import RHO_SEA as RHO_SEA, G as G, Scales as Scales, froude_number as froude_number
+from ._vessel import VESSEL_PARAMETERS as VESSEL_PARAMETERS, Vessel as Vessel
 
-__version__ = "0.1.0"
+__all__ = [
+    "STATE_NAMES",
+    "ForceBreakdown",
+    "TowModel",
+    "force_breakdown",
+    "sway_offset",
+    "vector_field",
+    "Equilibria",
+    "analytic_equilibria",
+    "equilibria",
+    "equilibria_fixed",
+    "heading_residual",
+    "damping_ratio",
+    "fishtail_metrics",
+    "force_history",
+    "trajectory",
+    "get_parameter",
+    "with_parameters",
+    "Simulation",
+    "initial_state",
+    "simulate",
+    "simulate_batch",
+    "STABILITY_LABELS",
+    "STABILITY_TOL",
+    "StabilityResult",
+    "characteristic_polynomial",
+    "classify",
+    "eigenvalues",
+    "hurwitz_determinants",
+    "jacobian",
+    "max_real_eigenvalue",
+    "routh_hurwitz_stable",
+    "stability",
+    "sweep",
+    "sweep_arrays",
+    "AbstractTowline",
+    "Bridle",
+    "PowerLawTowline",
+    "Towline",
+    "RHO_SEA",
+    "G",
+    "Scales",
+    "froude_number",
+    "VESSEL_PARAMETERS",
+    "Vessel",
+]
+
+try:
+    __version__ = _version("jaxtow")
+except _NotFound:  # running from a source tree that was never installed
+    __version__ = "0+unknown"
+
+#: Subpackages loaded on first use: the numerics never import xarray or matplotlib, and
+#: nothing imports Capytaine until a panel solve is asked for.
+_LAZY = ("io", "plotting", "bem", "cli")
 
 
 def __getattr__(name):
-    # `jt.io`, `jt.plotting` and `jt.bem` load on first use: the numerics never import
-    # xarray/matplotlib, and nothing imports Capytaine until a panel solve is asked for
-    if name in ("io", "plotting", "bem", "cli"):
-        import importlib
-
-        return importlib.import_module(f".{name}", __name__)
+    if name in _LAZY:
+        return _import_module(f".{name}", __name__)
     raise AttributeError(f"module 'jaxtow' has no attribute {name!r}")

@@ -32,11 +32,27 @@ import jax.numpy as jnp
 import numpy as np
 import optimistix as optx
 
-from .dynamics import TowModel
-from .equilibrium import _state_from_heading, heading_residual
-from .parameters import get_parameter, with_parameters
-from .stability import eigenvalues
-from .vessel import VESSEL_PARAMETERS
+from ._dynamics import TowModel
+from ._equilibrium import _state_from_heading, heading_residual
+from ._parameters import get_parameter, with_parameters
+from ._roots import newton
+from ._stability import STABLE, classify, eigenvalues, max_real_eigenvalue
+from ._vessel import VESSEL_PARAMETERS
+
+__all__ = [
+    "DESIGN_BOUNDS",
+    "SMOOTHING",
+    "straight_equilibrium",
+    "spectral_abscissa",
+    "smooth_abscissa",
+    "margin_terms",
+    "design_objective",
+    "DesignResult",
+    "optimise_towline",
+    "grid_search",
+    "sensitivity_arrays",
+    "sensitivities",
+]
 
 #: Design variables and their default box (non-dimensional): l0' towline length, x_p'
 #: attachment (bridle apex) ahead of the CoG, y_p' transverse offset (to port), EA'.
@@ -49,19 +65,23 @@ def straight_equilibrium(model: TowModel, psi0=0.0, *, rtol: float = 1e-12, max_
     """The equilibrium reached by Newton's method on the heading residual from ψ0 (default
     straight behind). Returns (state (6,), ψ, converged). Differentiable in the model by
     the implicit function theorem (optimistix's implicit adjoint)."""
-    sol = optx.root_find(lambda p, m: heading_residual(p, m), optx.Newton(rtol=rtol, atol=rtol),
-                         jnp.asarray(psi0, float), model, max_steps=max_steps, throw=False)
-    psi = sol.value
+    psi, ok = newton(
+        lambda p, m: heading_residual(p, m),
+        jnp.asarray(psi0, float),
+        model,
+        rtol=rtol,
+        atol=rtol,
+        max_steps=max_steps,
+    )
     state = _state_from_heading(psi, model)[0]
-    ok = (sol.result == optx.RESULTS.successful) & jnp.isfinite(psi)
-    return state, psi, ok
+    return state, psi, ok & jnp.isfinite(psi)
 
 
 def spectral_abscissa(model: TowModel, y=None):
     """max Re λ of the Jacobian at ``y`` (default: `straight_equilibrium`)."""
     if y is None:
         y = straight_equilibrium(model)[0]
-    return jnp.max(jnp.real(eigenvalues(model, y)))
+    return max_real_eigenvalue(model, y)
 
 
 def smooth_abscissa(model: TowModel, y=None, tau: float = SMOOTHING):
@@ -79,8 +99,13 @@ def margin_terms(model: TowModel, psi0=0.0, tau: float = SMOOTHING) -> dict:
     ``converged``."""
     y, psi, ok = straight_equilibrium(model, psi0)
     re = jnp.real(eigenvalues(model, y))
-    return dict(abscissa=jnp.max(re), smooth=tau * jax.nn.logsumexp(re / tau), psi=psi,
-                tension=model.towline.tension(y[3]), converged=ok)
+    return dict(
+        abscissa=jnp.max(re),
+        smooth=tau * jax.nn.logsumexp(re / tau),
+        psi=psi,
+        tension=model.towline.tension(y[3]),
+        converged=ok,
+    )
 
 
 def _apply(model, params: dict, ea_scale):
@@ -100,8 +125,17 @@ def _scenarios(model, scenarios, ea_scales):
     return models, scales
 
 
-def design_objective(params: dict, models, ea_scales, *, aggregate: str = "worst", tau: float = SMOOTHING,
-                     psi_limit: float = math.radians(10.0), tension_limit=None, penalty: float = 1000.0):
+def design_objective(
+    params: dict,
+    models,
+    ea_scales,
+    *,
+    aggregate: str = "worst",
+    tau: float = SMOOTHING,
+    psi_limit: float = math.radians(10.0),
+    tension_limit=None,
+    penalty: float = 1000.0,
+):
     """The design objective (to minimise) and its terms.
 
     J = agg_k smooth_abscissa_k + penalty·Σ_k [max(0, |ψ_k| − ψ_lim)² + max(0, T'_k − T'_lim)²]
@@ -110,7 +144,9 @@ def design_objective(params: dict, models, ea_scales, *, aggregate: str = "worst
     scenarios (sea states, tug speeds: one `TowModel` each; ``ea_scales`` rescales the
     design EA' per scenario, e.g. (U_ref/U)² for another tug speed).
     """
-    terms = [margin_terms(_apply(m, params, s), tau=tau) for m, s in zip(models, ea_scales)]  # few scenarios
+    terms = [
+        margin_terms(_apply(m, params, s), tau=tau) for m, s in zip(models, ea_scales)
+    ]  # few scenarios
     a = jnp.stack([t["smooth"] for t in terms])
     agg = tau * jax.nn.logsumexp(a / tau) if aggregate == "worst" else jnp.mean(a)
     pen = 0.0
@@ -144,7 +180,7 @@ class DesignResult:
 
     @property
     def stable(self) -> bool:
-        return bool(np.all(self.abscissa < 0))
+        return bool(np.all(np.asarray(classify(self.abscissa)) == STABLE))
 
     def to_dataset(self):
         from .io.design import design_dataset
@@ -159,21 +195,40 @@ def _check_bounds(variables, bounds):
             raise ValueError(f"parameter 'bounds': no range for design variable {v!r}")
         lo, hi = (float(b) for b in bounds[v])
         if not lo < hi:
-            raise ValueError(f"parameter 'bounds': range of {v!r} must have lo < hi, got {(lo, hi)}")
+            raise ValueError(
+                f"parameter 'bounds': range of {v!r} must have lo < hi, got {(lo, hi)}"
+            )
         out[v] = (lo, hi)
     return out
 
 
 def _summary(params, models, scales, opts):
     J, terms = design_objective(params, models, scales, **opts)
-    return (float(J), np.array([float(t["abscissa"]) for t in terms]), np.array([float(t["psi"]) for t in terms]),
-            np.array([float(t["tension"]) for t in terms]))
+    return (
+        float(J),
+        np.array([float(t["abscissa"]) for t in terms]),
+        np.array([float(t["psi"]) for t in terms]),
+        np.array([float(t["tension"]) for t in terms]),
+    )
 
 
-def optimise_towline(model: TowModel, *, variables=("l0", "xp", "yp", "EA"), bounds=None, x0=None, scenarios=None,
-                     ea_scales=None, aggregate: str = "worst", tau: float = SMOOTHING,
-                     psi_limit: float = math.radians(10.0), tension_limit=None, penalty: float = 1000.0,
-                     rtol: float = 1e-9, atol: float = 1e-9, max_steps: int = 200) -> DesignResult:
+def optimise_towline(
+    model: TowModel,
+    *,
+    variables=("l0", "xp", "yp", "EA"),
+    bounds=None,
+    x0=None,
+    scenarios=None,
+    ea_scales=None,
+    aggregate: str = "worst",
+    tau: float = SMOOTHING,
+    psi_limit: float = math.radians(10.0),
+    tension_limit=None,
+    penalty: float = 1000.0,
+    rtol: float = 1e-9,
+    atol: float = 1e-9,
+    max_steps: int = 200,
+) -> DesignResult:
     """Gradient-based design of the towline / bridle attachment (thesis section 8.4).
 
     Minimises `design_objective` over ``variables`` (any of l0', x_p', y_p', EA'; others are
@@ -191,7 +246,13 @@ def optimise_towline(model: TowModel, *, variables=("l0", "xp", "yp", "EA"), bou
     variables = tuple(variables)
     box = _check_bounds(variables, {**DESIGN_BOUNDS, **(bounds or {})})
     models, scales = _scenarios(model, scenarios, ea_scales)
-    opts = dict(aggregate=aggregate, tau=tau, psi_limit=psi_limit, tension_limit=tension_limit, penalty=penalty)
+    opts = dict(
+        aggregate=aggregate,
+        tau=tau,
+        psi_limit=psi_limit,
+        tension_limit=tension_limit,
+        penalty=penalty,
+    )
     lo = jnp.array([box[v][0] for v in variables])
     hi = jnp.array([box[v][1] for v in variables])
     start = {v: float(get_parameter(model, v)) for v in variables}
@@ -200,7 +261,9 @@ def optimise_towline(model: TowModel, *, variables=("l0", "xp", "yp", "EA"), bou
     frac = jnp.clip((s0 - lo) / (hi - lo), 0.0, 1.0)
     z0 = jnp.arcsin(2.0 * frac - 1.0)
 
-    def theta(z):  # the box as a smooth periodic map: a bound is a stationary point in z, reached at finite z
+    def theta(
+        z,
+    ):  # the box as a smooth periodic map: a bound is a stationary point in z, reached at finite z
         return lo + (hi - lo) * 0.5 * (1.0 + jnp.sin(z))
 
     def fn(z, _):
@@ -209,15 +272,32 @@ def optimise_towline(model: TowModel, *, variables=("l0", "xp", "yp", "EA"), bou
     sol = optx.minimise(fn, optx.BFGS(rtol=rtol, atol=atol), z0, max_steps=max_steps, throw=False)
     best = {v: float(x) for v, x in zip(variables, theta(sol.value))}
     J, a, psi, T = _summary(best, models, scales, opts)
-    return DesignResult(params=best, objective=J, abscissa=a, psi=psi, tension=T,
-                        n_evaluations=int(sol.stats["num_steps"]) + 1,
-                        converged=bool(sol.result == optx.RESULTS.successful), method="BFGS",
-                        options=dict(opts, variables=variables, bounds=box))
+    return DesignResult(
+        params=best,
+        objective=J,
+        abscissa=a,
+        psi=psi,
+        tension=T,
+        n_evaluations=int(sol.stats["num_steps"]) + 1,
+        converged=bool(sol.result == optx.RESULTS.successful),
+        method="BFGS",
+        options=dict(opts, variables=variables, bounds=box),
+    )
 
 
-def grid_search(model: TowModel, grid: dict, *, scenarios=None, ea_scales=None, aggregate: str = "worst",
-                tau: float = SMOOTHING, psi_limit: float = math.radians(10.0), tension_limit=None,
-                penalty: float = 1000.0, batch_size: int = 256) -> DesignResult:
+def grid_search(
+    model: TowModel,
+    grid: dict,
+    *,
+    scenarios=None,
+    ea_scales=None,
+    aggregate: str = "worst",
+    tau: float = SMOOTHING,
+    psi_limit: float = math.radians(10.0),
+    tension_limit=None,
+    penalty: float = 1000.0,
+    batch_size: int = 256,
+) -> DesignResult:
     """Dense-grid reference for `optimise_towline`: `design_objective` on the tensor grid
     ``grid`` (dict name → 1-D values), evaluated in vmapped batches (no Python loop over
     the grid); returns the best grid point."""
@@ -225,20 +305,39 @@ def grid_search(model: TowModel, grid: dict, *, scenarios=None, ea_scales=None, 
     axes = [jnp.asarray(grid[n], float) for n in names]
     mesh = jnp.stack([g.ravel() for g in jnp.meshgrid(*axes, indexing="ij")], axis=-1)
     models, scales = _scenarios(model, scenarios, ea_scales)
-    opts = dict(aggregate=aggregate, tau=tau, psi_limit=psi_limit, tension_limit=tension_limit, penalty=penalty)
+    opts = dict(
+        aggregate=aggregate,
+        tau=tau,
+        psi_limit=psi_limit,
+        tension_limit=tension_limit,
+        penalty=penalty,
+    )
 
     @jax.jit
     def run(pts):
-        return jax.lax.map(lambda p: design_objective(dict(zip(names, p)), models, scales, **opts)[0], pts,
-                           batch_size=batch_size)
+        return jax.lax.map(
+            lambda p: design_objective(dict(zip(names, p)), models, scales, **opts)[0],
+            pts,
+            batch_size=batch_size,
+        )
 
     vals = np.asarray(run(mesh)).reshape([a.size for a in axes])
     k = np.unravel_index(int(np.nanargmin(vals)), vals.shape)
     best = {n: float(axes[i][k[i]]) for i, n in enumerate(names)}
     J, a, psi, T = _summary(best, models, scales, opts)
-    return DesignResult(params=best, objective=J, abscissa=a, psi=psi, tension=T, n_evaluations=int(vals.size),
-                        converged=True, method="grid", grid={n: np.asarray(g) for n, g in zip(names, axes)},
-                        values=vals, options=dict(opts, variables=names))
+    return DesignResult(
+        params=best,
+        objective=J,
+        abscissa=a,
+        psi=psi,
+        tension=T,
+        n_evaluations=int(vals.size),
+        converged=True,
+        method="grid",
+        grid={n: np.asarray(g) for n, g in zip(names, axes)},
+        values=vals,
+        options=dict(opts, variables=names),
+    )
 
 
 def _external_parameters(model: TowModel) -> tuple:
@@ -257,8 +356,11 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
     e.g. a wave amplitude, named ``external.<field>``), by one reverse pass per point;
     vmapped over a ``sweep`` (dict name → values, one parameter). Returns (names, values
     (n_sweep, n_par), gradients (n_sweep, n_par), abscissa (n_sweep,), sweep values)."""
-    line = tuple(f for f in getattr(model.towline, "__dataclass_fields__", {})
-                 if isinstance(getattr(model.towline, f), jax.Array))
+    line = tuple(
+        f
+        for f in getattr(model.towline, "__dataclass_fields__", {})
+        if isinstance(getattr(model.towline, f), jax.Array)
+    )
     ext = tuple(f"external.{f}" for f in _external_parameters(model))
     names = tuple(parameters) if parameters is not None else tuple(VESSEL_PARAMETERS) + line + ext
 
@@ -277,7 +379,7 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
         return names, np.asarray(x)[None], np.asarray(g)[None], np.asarray(a)[None], None
     if len(sweep) != 1:
         raise ValueError("parameter 'sweep' must name exactly one parameter")
-    (sname, svals), = sweep.items()
+    ((sname, svals),) = sweep.items()
     svals = jnp.asarray(svals, float)
     x, g, a = jax.jit(jax.vmap(lambda s: one(with_parameters(model, **{sname: s}))))(svals)
     return names, np.asarray(x), np.asarray(g), np.asarray(a), (sname, np.asarray(svals))
@@ -291,4 +393,6 @@ def sensitivities(model: TowModel, parameters=None, *, sweep: dict | None = None
     `sensitivity_arrays` for the arguments."""
     from .io.design import sensitivity_dataset
 
-    return sensitivity_dataset(*sensitivity_arrays(model, parameters, sweep=sweep, psi0=psi0), model=model)
+    return sensitivity_dataset(
+        *sensitivity_arrays(model, parameters, sweep=sweep, psi0=psi0), model=model
+    )

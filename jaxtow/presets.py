@@ -11,7 +11,7 @@ these presets carries the list in ``Vessel.assumed`` and every dataset in its at
 * Draft T = 5.0 m: a loaded 250 ft × 80 ft (76.2 m × 24.4 m) deck barge, the class of the
   Maritime Swift barge that Barge 2 is based on (thesis section 3.5), has a moulded depth of
   about 6 m and a loaded draft of 4-5 m; 5.0 m is also the box draft used for Barge 1
-  panel computations in shared/notes. In the non-dimensional equations T only enters through
+  panel computations (docs/bem.md). In the non-dimensional equations T only enters through
   EA' (and later the wave-drift normalisation). Consistency check: m' = 2 C_B B/L gives
   C_B = 0.928 from m' = 0.5943 independently of T, a plausible block coefficient for a
   raked barge.
@@ -38,10 +38,39 @@ these presets carries the list in ``Vessel.assumed`` and every dataset in its at
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
-from .towline import Towline
-from .units import Scales
-from .vessel import Vessel
+from ._towline import Towline
+from ._units import RHO_SEA, Scales
+from ._vessel import Vessel
+
+if TYPE_CHECKING:  # the resistance and drift modules import these presets lazily
+    from .drift import QTF
+    from .resistance import CoefficientTable, SeaState, TowResistance, Tug
+
+__all__ = [
+    "BARGE2_LENGTH",
+    "BARGE2_BREADTH",
+    "U_TUG_DEFAULT",
+    "ASSUMPTIONS",
+    "BARGE2_WIND_TABLE",
+    "SEA_STATES",
+    "ILLUSTRATIVE_TUG",
+    "barge2_scales",
+    "block_coefficient_from_mass",
+    "clarke_added_mass",
+    "radii_of_gyration",
+    "barge2_rake",
+    "barge_2a",
+    "barge_2b",
+    "VESSELS",
+    "steel_wire_EA_nd",
+    "default_towline",
+    "barge2_wind_table",
+    "barge2_resistance",
+    "sea_state",
+    "illustrative_tug",
+]
 
 #: Main particulars of Barge 2 (thesis section 3.5; L and B from the text).
 BARGE2_LENGTH = 76.2  # m
@@ -51,35 +80,63 @@ U_TUG_DEFAULT = 2.0  # m/s
 
 #: The documented estimates for values the thesis text lacks (see module docstring).
 ASSUMPTIONS = {
-    "draft": dict(value=5.0, units="m",
-                  note="loaded draft of a 76.2 m x 24.4 m deck barge; estimate, not from the thesis"),
-    "a11_over_m": dict(value=0.05, units="-",
-                       note="surge added mass 5 % of mass (Brix 1993); estimate"),
-    "a22,a66": dict(value=None, units="-",
-                    note="Clarke, Gedling & Hine (1983) regressions with C_B from m' and T = 5.0 m; estimate"),
-    "EA": dict(value=2.6e8, units="N",
-               note="76 mm 6-strand IWRC steel wire, EA = 1.0e11 Pa x 2.63e-3 m^2; estimate"),
-    "rake": dict(value=None, units="m",
-                 note="Barge 2 bow/stern rake from waterline to keel over a = (1 - C_B) L = 5.49 m "
-                      "(C_B = 0.928 from m'); geometry estimate, not from the thesis"),
-    "wind_table": dict(value=None, units="-",
-                       note="ILLUSTRATIVE Barge 2 wind coefficients (BARGE2_WIND_TABLE): OCIMF-form curve "
-                            "shapes with values chosen by jaxtow; not measured, not the thesis's "
-                            "(unpublished) Smit Barge 2 table"),
-    "cog_z": dict(value=10.0, units="m",
-                  note="height of the CoG above the keel for the panel computations (thesis Table B.3, "
-                       "Barge 1; the thesis's choice after its CoG study, appendix B.3)"),
-    "radii_of_gyration": dict(value=(0.35, 0.25, 0.25), units="B, L, L",
-                              note="k_xx = 0.35 B, k_yy = k_zz = 0.25 L: the middle of Journee's ranges "
-                                   "(0.30-0.40 B, 0.22-0.28 L; Journee & Massie, Offshore Hydromechanics, "
-                                   "2001), which thesis Table B.1 quotes (the table itself is lost); estimate"),
-    "roll_damping": dict(value=0.05, units="of critical",
-                         note="linearised viscous roll damping for the panel-method RAOs (potential flow "
-                              "alone gives an unbounded roll resonance); 5 % of critical, a usual value "
-                              "for a barge without bilge keels; estimate"),
-    "wind_height": dict(value=10.0, units="m",
-                        note="ILLUSTRATIVE above-water height of Barge 2 with deck cargo (about 1.1 m "
-                             "freeboard + 9 m cargo); the thesis's 'arbitrary deck load' is not given"),
+    "draft": dict(
+        value=5.0,
+        units="m",
+        note="loaded draft of a 76.2 m x 24.4 m deck barge; estimate, not from the thesis",
+    ),
+    "a11_over_m": dict(
+        value=0.05, units="-", note="surge added mass 5 % of mass (Brix 1993); estimate"
+    ),
+    "a22,a66": dict(
+        value=None,
+        units="-",
+        note="Clarke, Gedling & Hine (1983) regressions with C_B from m' and T = 5.0 m; estimate",
+    ),
+    "EA": dict(
+        value=2.6e8,
+        units="N",
+        note="76 mm 6-strand IWRC steel wire, EA = 1.0e11 Pa x 2.63e-3 m^2; estimate",
+    ),
+    "rake": dict(
+        value=None,
+        units="m",
+        note="Barge 2 bow/stern rake from waterline to keel over a = (1 - C_B) L = 5.49 m "
+        "(C_B = 0.928 from m'); geometry estimate, not from the thesis",
+    ),
+    "wind_table": dict(
+        value=None,
+        units="-",
+        note="ILLUSTRATIVE Barge 2 wind coefficients (BARGE2_WIND_TABLE): OCIMF-form curve "
+        "shapes with values chosen by jaxtow; not measured, not the thesis's "
+        "(unpublished) Smit Barge 2 table",
+    ),
+    "cog_z": dict(
+        value=10.0,
+        units="m",
+        note="height of the CoG above the keel for the panel computations (thesis Table B.3, "
+        "Barge 1; the thesis's choice after its CoG study, appendix B.3)",
+    ),
+    "radii_of_gyration": dict(
+        value=(0.35, 0.25, 0.25),
+        units="B, L, L",
+        note="k_xx = 0.35 B, k_yy = k_zz = 0.25 L: the middle of Journee's ranges "
+        "(0.30-0.40 B, 0.22-0.28 L; Journee & Massie, Offshore Hydromechanics, "
+        "2001), which thesis Table B.1 quotes (the table itself is lost); estimate",
+    ),
+    "roll_damping": dict(
+        value=0.05,
+        units="of critical",
+        note="linearised viscous roll damping for the panel-method RAOs (potential flow "
+        "alone gives an unbounded roll resonance); 5 % of critical, a usual value "
+        "for a barge without bilge keels; estimate",
+    ),
+    "wind_height": dict(
+        value=10.0,
+        units="m",
+        note="ILLUSTRATIVE above-water height of Barge 2 with deck cargo (about 1.1 m "
+        "freeboard + 9 m cargo); the thesis's 'arbitrary deck load' is not given",
+    ),
 }
 
 #: ILLUSTRATIVE wind-load coefficients of Barge 2 with box-shaped deck cargo (OCIMF form,
@@ -107,15 +164,40 @@ SEA_STATES = {
 #: ILLUSTRATIVE ocean tug for the Barge 2 examples (quadratic pull curve): 40 t bollard
 #: pull, pull vanishing at 7 m/s (13.6 kn), offshore towing efficiency 0.75 (the usual
 #: industry factor). Not from the thesis (its tug is not specified).
-ILLUSTRATIVE_TUG = dict(bollard_pull=40.0 * 9.80665e3, free_speed=7.0, efficiency=0.75,
-                        resistance_coefficient=0.0)
+ILLUSTRATIVE_TUG = dict(
+    bollard_pull=40.0 * 9.80665e3, free_speed=7.0, efficiency=0.75, resistance_coefficient=0.0
+)
 
 # Published values, thesis Table 3.7 (Hong et al. [37], Nam et al. [51]).
 _TABLE_3_7 = {
-    "2a": dict(m=0.5943, Izz=0.0494, R0=0.0697, Xvv=-0.1999, Xrr=0.1288, Yv=-0.4003,
-               Yr=0.0161, Yvvv=-1.2109, Yrrr=0.9199, Nv=-0.1692, Nr=-0.0639, Nvvv=0.1184),
-    "2b": dict(m=0.5943, Izz=0.0494, R0=0.0747, Xvv=-0.3889, Xrr=-0.0924, Yv=-0.5998,
-               Yr=0.0875, Yvvv=-0.3269, Yrrr=0.0, Nv=-0.0624, Nr=-0.1004, Nvvv=-0.4149),
+    "2a": dict(
+        m=0.5943,
+        Izz=0.0494,
+        R0=0.0697,
+        Xvv=-0.1999,
+        Xrr=0.1288,
+        Yv=-0.4003,
+        Yr=0.0161,
+        Yvvv=-1.2109,
+        Yrrr=0.9199,
+        Nv=-0.1692,
+        Nr=-0.0639,
+        Nvvv=0.1184,
+    ),
+    "2b": dict(
+        m=0.5943,
+        Izz=0.0494,
+        R0=0.0747,
+        Xvv=-0.3889,
+        Xrr=-0.0924,
+        Yv=-0.5998,
+        Yr=0.0875,
+        Yvvv=-0.3269,
+        Yrrr=0.0,
+        Nv=-0.0624,
+        Nr=-0.1004,
+        Nvvv=-0.4149,
+    ),
 }
 
 
@@ -130,15 +212,16 @@ def block_coefficient_from_mass(m_nd: float, length: float, breadth: float) -> f
     return m_nd * length / (2.0 * breadth)
 
 
-def clarke_added_mass(m_nd: float, length: float, breadth: float, draft: float,
-                      a11_fraction: float | None = None) -> dict:
+def clarke_added_mass(
+    m_nd: float, length: float, breadth: float, draft: float, a11_fraction: float | None = None
+) -> dict:
     """Added masses (a11', a22', a66') in the ½ρTL² / ½ρTL⁴ scales.
 
     a22', a66' from Clarke, Gedling & Hine (1983) (see module docstring), a11' as a
     fraction of m' (default `ASSUMPTIONS['a11_over_m']`).
     """
     if a11_fraction is None:
-        a11_fraction = ASSUMPTIONS["a11_over_m"]["value"]
+        a11_fraction = float(ASSUMPTIONS["a11_over_m"]["value"])
     cb = block_coefficient_from_mass(m_nd, length, breadth)
     t_l, b_t, b_l = draft / length, breadth / draft, breadth / length
     yvdot = math.pi * t_l**2 * (1.0 + 0.16 * cb * b_t - 5.1 * b_l**2)  # by ½ρL³
@@ -190,14 +273,104 @@ def barge_2b(draft: float | None = None) -> Vessel:
 VESSELS = {"barge_2a": barge_2a, "barge_2b": barge_2b}
 
 
-def steel_wire_EA_nd(u_tug: float = U_TUG_DEFAULT, draft: float | None = None,
-                     EA: float | None = None) -> float:
+def steel_wire_EA_nd(
+    u_tug: float = U_TUG_DEFAULT, draft: float | None = None, EA: float | None = None
+) -> float:
     """EA' = EA / (½ρTLU²) of the documented steel wire towline on Barge 2."""
     EA = ASSUMPTIONS["EA"]["value"] if EA is None else EA
     return EA / barge2_scales(u_tug, draft).force
 
 
-def default_towline(l0: float = 2.5, xp: float = 0.5, u_tug: float = U_TUG_DEFAULT,
-                    draft: float | None = None) -> Towline:
+def default_towline(
+    l0: float = 2.5, xp: float = 0.5, u_tug: float = U_TUG_DEFAULT, draft: float | None = None
+) -> Towline:
     """Elastic steel towline for Barge 2 with the documented EA (estimate)."""
     return Towline(l0=l0, xp=xp, EA=steel_wire_EA_nd(u_tug, draft))
+
+
+# --------------------------------------------------------------- Barge 2 resistance, sea states, tug
+
+
+def barge2_wind_table() -> CoefficientTable:
+    """The ILLUSTRATIVE Barge 2 wind table (`BARGE2_WIND_TABLE`)."""
+    from .resistance import CoefficientTable
+
+    t = BARGE2_WIND_TABLE
+    return CoefficientTable.symmetric(
+        t["angle_deg"],
+        t["cx"],
+        t["cy"],
+        t["cn"],
+        label="ILLUSTRATIVE Barge 2 wind table (jaxtow.BARGE2_WIND_TABLE)",
+        illustrative=True,
+    )
+
+
+def barge2_resistance(
+    version: str = "2a",
+    *,
+    method: str = "kashiwagi",
+    wind_table: CoefficientTable | None = None,
+    wind_height: float | None = None,
+    qtf: QTF | None = None,
+    draft: float | None = None,
+    omega=None,
+) -> TowResistance:
+    """Barge 2 (thesis section 7.1-7.2): current/calm-water load from the manoeuvring
+    derivatives of version ``2a`` or ``2b`` (fig. 7.1b), wind from ``wind_table`` (default
+    the ILLUSTRATIVE table) on H = ``wind_height`` (default the ILLUSTRATIVE 10 m), mean
+    wave drift from the Barge 2 waterline by ``method`` or from a panel ``qtf``. The
+    returned ``assumed`` lists every estimate the numbers depend on."""
+    from .drift import barge2_waterline
+    from .resistance import RHO_AIR, ManoeuvringCoefficients, OCIMFLoad, TowResistance, WaveDrift
+
+    if version not in ("2a", "2b"):
+        raise ValueError(f"parameter 'version' must be '2a' or '2b', got {version!r}")
+    vessel = VESSELS[f"barge_{version}"](draft)
+    T = ASSUMPTIONS["draft"]["value"] if draft is None else float(draft)
+    L, B = BARGE2_LENGTH, BARGE2_BREADTH
+    H = ASSUMPTIONS["wind_height"]["value"] if wind_height is None else float(wind_height)
+    table = barge2_wind_table() if wind_table is None else wind_table
+    hull = OCIMFLoad(ManoeuvringCoefficients(vessel, L, B), RHO_SEA, L, B, T)
+    wind = OCIMFLoad(table, RHO_AIR, L, B, H)
+    waves = (
+        WaveDrift(qtf=qtf, omega=omega)
+        if qtf is not None
+        else WaveDrift(barge2_waterline(draft), method=method, omega=omega)
+    )
+    assumed = [("draft", f"T = {T} m: {ASSUMPTIONS['draft']['note']}")]
+    if table.illustrative:
+        assumed.append(("wind_table", ASSUMPTIONS["wind_table"]["note"]))
+    if wind_height is None:
+        assumed.append(("wind_height", ASSUMPTIONS["wind_height"]["note"]))
+    if qtf is None:
+        assumed.append(
+            (
+                "wave_drift",
+                f"waterline method {method!r} on the estimated Barge 2 rake "
+                f"({ASSUMPTIONS['rake']['note']}); misses the motion-induced "
+                "drift in the motion zone (L/lambda < 1)",
+            )
+        )
+    return TowResistance(
+        hull=hull, wind=wind, waves=waves, name=f"barge_{version}", assumed=tuple(assumed)
+    )
+
+
+def sea_state(name: str, **overrides) -> SeaState:
+    """Thesis sea state ``'survival'`` (1: Hs = 5 m, U_wind = 20 m/s) or ``'sailing'`` (2:
+    Hs = 2.4 m, U_wind = 10 m/s), `SEA_STATES`, with any field overridden."""
+    from .resistance import SeaState
+
+    if name not in SEA_STATES:
+        raise ValueError(
+            f"parameter 'name': unknown sea state {name!r}; choose from {sorted(SEA_STATES)}"
+        )
+    return SeaState(**{**SEA_STATES[name], **overrides}, name=name)
+
+
+def illustrative_tug(**overrides) -> Tug:
+    """The ILLUSTRATIVE 40 t tug of the examples (`ILLUSTRATIVE_TUG`)."""
+    from .resistance import Tug
+
+    return Tug(**{**ILLUSTRATIVE_TUG, **overrides})

@@ -15,18 +15,32 @@ from __future__ import annotations
 import numpy as np
 
 from . import presets
-from .drift.compare import qtf_from_method
-from .drift.force import IrregularWaveDriftForce, WaveDriftForce
-from .drift.waterline import barge2_waterline
-from .dynamics import CombinedForce, TowModel
-from .waves.spectra import Jonswap
+from ._dynamics import TowModel
+from .drift._compare import qtf_from_method
+from .drift._waterline import barge2_waterline
+from .forces import CombinedForce
+from .forces._waves import IrregularWaveDriftForce, WaveDriftForce
+from .waves import DEFAULT_OMEGA, Jonswap
+
+__all__ = [
+    "QTF_OMEGA",
+    "QTF_BETA_DEG",
+    "APPROXIMATE_QTF",
+    "approximate_qtf",
+    "barge2_wave_model",
+    "barge2_irregular_model",
+    "nearest_straight",
+    "valid_count",
+]
 
 #: Grid of the stand-in QTF (rad/s; headings 0-180 deg completed by symmetry).
 QTF_OMEGA = np.linspace(0.1, 2.5, 49)
 QTF_BETA_DEG = np.linspace(0.0, 180.0, 19)
-APPROXIMATE_QTF = ("APPROXIMATE drift forces: QTF tabulated from the Kashiwagi waterline method "
-                   "(diffraction only, no motion-induced drift) on the estimated Barge 2 rake, "
-                   "with Aranha's wave-drift damping; the thesis used Delfrac near-field QTFs")
+APPROXIMATE_QTF = (
+    "APPROXIMATE drift forces: QTF tabulated from the Kashiwagi waterline method "
+    "(diffraction only, no motion-induced drift) on the estimated Barge 2 rake, "
+    "with Aranha's wave-drift damping; the thesis used Delfrac near-field QTFs"
+)
 
 
 def approximate_qtf(method: str = "kashiwagi", draft=None):
@@ -34,8 +48,17 @@ def approximate_qtf(method: str = "kashiwagi", draft=None):
     return qtf_from_method(method, barge2_waterline(draft), QTF_OMEGA, np.radians(QTF_BETA_DEG))
 
 
-def barge2_wave_model(version: str = "2a", *, l0: float = 2.5, xp: float = 0.5, omega: float = 1.0,
-                      zeta_a: float = 1.25, qtf=None, u_tug: float = presets.U_TUG_DEFAULT, wind=None) -> TowModel:
+def barge2_wave_model(
+    version: str = "2a",
+    *,
+    l0: float = 2.5,
+    xp: float = 0.5,
+    omega: float = 1.0,
+    zeta_a: float = 1.25,
+    qtf=None,
+    u_tug: float = presets.U_TUG_DEFAULT,
+    wind=None,
+) -> TowModel:
     """Barge 2a/2b on the documented steel towline in regular head waves (ω [rad/s], ζa [m])
     at tug speed ``u_tug`` (thesis chapter 6.2 base: x_p' = 0.5, ζa = 1.2-1.25 m, 2 m/s);
     ``wind``: an optional `jaxtow.resistance.WindForce` added to the waves (thesis 7.2.2).
@@ -43,21 +66,36 @@ def barge2_wave_model(version: str = "2a", *, l0: float = 2.5, xp: float = 0.5, 
     q = approximate_qtf() if qtf is None else qtf
     waves = WaveDriftForce(qtf=q, omega=omega, zeta_a=zeta_a, scales=presets.barge2_scales(u_tug))
     ext = waves if wind is None else CombinedForce((waves, wind))
-    return TowModel(vessel=presets.VESSELS[f"barge_{version}"](),
-                    towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug), external=ext)
+    return TowModel(
+        vessel=presets.VESSELS[f"barge_{version}"](),
+        towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug),
+        external=ext,
+    )
 
 
-def barge2_irregular_model(version: str = "2a", *, l0: float = 2.5, xp: float = 0.5, hs: float = 2.4,
-                           tp: float = 7.0, qtf=None, u_tug: float = presets.U_TUG_DEFAULT,
-                           omega=None) -> TowModel:
+def barge2_irregular_model(
+    version: str = "2a",
+    *,
+    l0: float = 2.5,
+    xp: float = 0.5,
+    hs: float = 2.4,
+    tp: float = 7.0,
+    qtf=None,
+    u_tug: float = presets.U_TUG_DEFAULT,
+    omega=None,
+) -> TowModel:
     """Barge 2a/2b in an irregular head sea (JONSWAP Hs, Tp; mean drift, thesis 6.3); sweep Tp
-    as ``external.spectrum.tp``. ``omega``: integration grid (default 0.2-3 rad/s, 281 points)."""
+    as ``external.spectrum.tp``. ``omega``: integration grid (default `jaxtow.waves.DEFAULT_OMEGA`)."""
     q = approximate_qtf() if qtf is None else qtf
-    w = np.linspace(0.2, 3.0, 281) if omega is None else np.asarray(omega, float)
-    force = IrregularWaveDriftForce(qtf=q, spectrum=Jonswap(hs=hs, tp=tp), omega=w,
-                                    scales=presets.barge2_scales(u_tug))
-    return TowModel(vessel=presets.VESSELS[f"barge_{version}"](),
-                    towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug), external=force)
+    w = np.asarray(DEFAULT_OMEGA if omega is None else omega, float)
+    force = IrregularWaveDriftForce(
+        qtf=q, spectrum=Jonswap(hs=hs, tp=tp), omega=w, scales=presets.barge2_scales(u_tug)
+    )
+    return TowModel(
+        vessel=presets.VESSELS[f"barge_{version}"](),
+        towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug),
+        external=force,
+    )
 
 
 def nearest_straight(arrays: dict, field: str = "max_real"):

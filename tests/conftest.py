@@ -1,5 +1,16 @@
-import jaxtow  # noqa: F401  (enables float64 before any array is created)
-import pytest
+import os
+
+# figures are written to files in the tests; the package itself never picks a backend
+os.environ.setdefault("MPLBACKEND", "Agg")
+
+import jax  # noqa: E402
+
+# float64 for the whole suite, explicitly (importing jaxtow also switches it on)
+jax.config.update("jax_enable_x64", True)
+
+import pytest  # noqa: E402
+
+import jaxtow  # noqa: E402
 
 
 @pytest.fixture(scope="session")

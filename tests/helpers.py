@@ -26,3 +26,15 @@ def central_derivative(f, x, h=1e-6):
 
 def vf_numpy(y, m):
     return np.asarray(jt.vector_field(0.0, jnp.asarray(y), m))
+
+
+def assert_png_has_content(path, min_ink: float = 0.01):
+    """A written figure is a readable PNG with drawn content: more than ``min_ink`` of its
+    pixels differ from the background colour."""
+    import matplotlib.pyplot as plt
+
+    img = plt.imread(path)[..., :3]
+    background = np.median(img.reshape(-1, 3), axis=0)
+    ink = np.mean(np.any(np.abs(img - background) > 0.05, axis=-1))
+    assert img.shape[0] > 100 and img.shape[1] > 100, f"{path}: {img.shape} is not a figure"
+    assert ink > min_ink, f"{path}: only {ink:.3%} of the pixels are drawn"

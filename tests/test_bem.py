@@ -1,4 +1,4 @@
-"""Panel-method drift (issue 7): meshes, hydrostatics, the analytic cylinder reference,
+"""Panel-method drift: meshes, hydrostatics, the analytic cylinder reference,
 Capytaine far-/near-field drift, QTF output, cache, CLI, and jaxtow without the extra.
 
 Tests that need Capytaine skip when it is not installed (pip install 'jaxtow[bem]'); the
@@ -16,14 +16,17 @@ import pytest
 
 import jaxtow as jt
 from jaxtow import bem
-from jaxtow.cli import main
 from jaxtow.bem import nearfield, reference
+from jaxtow.cli import main
 
-RHO_G = jt.units.RHO_SEA * jt.units.G
-needs_capytaine = pytest.mark.skipif(not bem.available(), reason="Capytaine not installed (pip install 'jaxtow[bem]')")
+RHO_G = jt.RHO_SEA * jt.G
+needs_capytaine = pytest.mark.skipif(
+    not bem.available(), reason="Capytaine not installed (pip install 'jaxtow[bem]')"
+)
 
 
 # ---------------------------------------------------------------- meshes and hydrostatics
+
 
 @pytest.mark.parametrize("grading", [0.0, 0.6])
 def test_box_mesh_geometry_is_exact(grading):
@@ -48,10 +51,14 @@ def test_barge2_mesh_matches_the_waterline_and_block_coefficient():
     # the raked faces' slope is the waterline flare of the waterline methods' Barge 2
     bow = m.normals[m.centres[:, 0] > 0.5 * L - r["extent"] + 1e-6]
     bow = bow[np.abs(bow[:, 1]) < 1e-9]
-    assert np.allclose(np.degrees(np.arctan2(-bow[:, 2], bow[:, 0])), np.degrees(r["flare"]), atol=1e-9)
+    assert np.allclose(
+        np.degrees(np.arctan2(-bow[:, 2], bow[:, 0])), np.degrees(r["flare"]), atol=1e-9
+    )
     p0, p1, _ = m.waterline()
     wl = jt.drift.barge2_waterline()
-    assert np.sum(np.linalg.norm(p1 - p0, axis=1)) == pytest.approx(float(np.sum(wl.lengths)), rel=1e-12)
+    assert np.sum(np.linalg.norm(p1 - p0, axis=1)) == pytest.approx(
+        float(np.sum(wl.lengths)), rel=1e-12
+    )
 
 
 def test_rigid_body_hydrostatics_exact_and_errors():
@@ -59,10 +66,14 @@ def test_rigid_body_hydrostatics_exact_and_errors():
     body = bem.rigid_body(m, cog_z=10.0)
     gm_t = 2.5 + 24.4**2 / (12 * 5.0) - 10.0  # KB + BM - KG = 2.42 m
     assert body.stiffness[3, 3] / (RHO_G * m.volume) == pytest.approx(gm_t, rel=1e-12)
-    assert body.stiffness[4, 4] / (RHO_G * m.volume) == pytest.approx(2.5 + 76.2**2 / 60 - 10.0, rel=1e-12)
+    assert body.stiffness[4, 4] / (RHO_G * m.volume) == pytest.approx(
+        2.5 + 76.2**2 / 60 - 10.0, rel=1e-12
+    )
     assert body.stiffness[2, 2] == pytest.approx(RHO_G * 76.2 * 24.4, rel=1e-12)
     assert body.mass == pytest.approx(1025.0 * m.volume)
-    np.testing.assert_allclose(np.sqrt(np.diag(body.inertia) / body.mass), [0.35 * 24.4, 0.25 * 76.2, 0.25 * 76.2])
+    np.testing.assert_allclose(
+        np.sqrt(np.diag(body.inertia) / body.mass), [0.35 * 24.4, 0.25 * 76.2, 0.25 * 76.2]
+    )
     assert "Journee" in body.notes["radii"]
     with pytest.raises(ValueError, match="unstable in roll"):
         bem.rigid_body(m, cog_z=16.0)
@@ -73,6 +84,7 @@ def test_rigid_body_hydrostatics_exact_and_errors():
 
 
 # ---------------------------------------------------------------- analytic reference
+
 
 def test_near_field_integration_of_the_exact_cylinder_fields_equals_the_closed_form():
     """jaxtow's pressure integration (parts I and II) fed with the exact MacCamy-Fuchs fields on
@@ -91,11 +103,25 @@ def test_near_field_integration_of_the_exact_cylinder_fields_equals_the_closed_f
         phi0, _ = reference.cylinder_wall_fields(a, depth, omega, th, 0.0 * th)
         wp = np.stack([a * np.cos(th), a * np.sin(th), 0 * th], 1)
         out = nearfield.near_field_drift(
-            omega=omega, rho=jt.units.RHO_SEA, g=jt.units.G,
-            panels=dict(centres=np.stack([a * np.cos(TH.ravel()), a * np.sin(TH.ravel()), Z.ravel()], 1),
-                        normals=n, areas=areas, velocity=vel),
-            waterline=dict(points=wp, normals=wp / a, lengths=np.full(nth, a * 2 * math.pi / nth), potential=phi0),
-            mass=0.0, inertia=np.zeros((3, 3)), cog=np.zeros(3))
+            omega=omega,
+            rho=jt.RHO_SEA,
+            g=jt.G,
+            panels=dict(
+                centres=np.stack([a * np.cos(TH.ravel()), a * np.sin(TH.ravel()), Z.ravel()], 1),
+                normals=n,
+                areas=areas,
+                velocity=vel,
+            ),
+            waterline=dict(
+                points=wp,
+                normals=wp / a,
+                lengths=np.full(nth, a * 2 * math.pi / nth),
+                potential=phi0,
+            ),
+            mass=0.0,
+            inertia=np.zeros((3, 3)),
+            cog=np.zeros(3),
+        )
         exact = reference.cylinder_drift(a, depth, omega)
         assert out["force"][0] == pytest.approx(exact, rel=1e-6)
         assert abs(out["force"][1]) < 1e-9 * exact and np.allclose(out["parts"][2:], 0.0)
@@ -121,6 +147,7 @@ def test_capytaine_far_and_near_field_reproduce_the_analytic_cylinder():
 
 
 # ---------------------------------------------------------------- Barge 1 box
+
 
 @pytest.fixture(scope="module")
 def box_db(tmp_path_factory):
@@ -154,7 +181,10 @@ def test_raos_long_wave_limit_and_symmetry(box_db):
     assert pitch == pytest.approx(k, rel=0.05)  # follows the wave slope k ζa
     for d in ("Sway", "Roll", "Yaw"):  # head seas: no antisymmetric motion
         assert abs(complex(x.sel(omega=0.8, beta=0.0, dof=d))) < 1e-8
-    assert np.all(np.abs(ds.far_field.sel(beta=0.0, component=["fy", "nz"])) < 1e-6 * np.abs(ds.far_field).max())
+    assert np.all(
+        np.abs(ds.far_field.sel(beta=0.0, component=["fy", "nz"]))
+        < 1e-6 * np.abs(ds.far_field).max()
+    )
 
 
 @needs_capytaine
@@ -168,8 +198,9 @@ def test_near_field_parts_and_sectional_moments_are_consistent(box_db):
     np.testing.assert_allclose(m0.sel(axis="x"), p123.sel(component="fx"), rtol=1e-10, atol=1e-6)
     np.testing.assert_allclose(m0.sel(axis="y"), p123.sel(component="fy"), rtol=1e-10, atol=1e-6)
     # for a fore-aft symmetric box in beam seas the first moment of the sway force vanishes
-    assert abs(float(ds.sectional_moments.sel(axis="y", order=1, beta=math.pi / 2, omega=0.8))) < \
-        1e-6 * 76.2 * abs(float(m0.sel(axis="y", beta=math.pi / 2, omega=0.8)))
+    assert abs(
+        float(ds.sectional_moments.sel(axis="y", order=1, beta=math.pi / 2, omega=0.8))
+    ) < 1e-6 * 76.2 * abs(float(m0.sel(axis="y", beta=math.pi / 2, omega=0.8)))
     # beam seas push the barge to starboard (waves from port travel towards -y)
     assert float(ds.far_field.sel(component="fy", beta=math.pi / 2, omega=1.4)) < 0
     assert float(ds.near_field.sel(component="fy", beta=math.pi / 2, omega=1.4)) < 0
@@ -182,18 +213,27 @@ def test_qtf_output_cache_and_attributes(box_db, tmp_path):
     assert np.asarray(q.beta).min() == pytest.approx(-math.pi / 2)
     b15 = math.radians(15.0)
     v = np.asarray(q(0.8, b15))
-    np.testing.assert_allclose(v, ds.far_field.sel(omega=0.8, beta=b15).values, rtol=1e-12, atol=1e-9)
+    np.testing.assert_allclose(
+        v, ds.far_field.sel(omega=0.8, beta=b15).values, rtol=1e-12, atol=1e-9
+    )
     w = np.asarray(q(0.8, -b15))
     np.testing.assert_allclose(w, v * [1, -1, -1], rtol=1e-12, atol=1e-9)
     # the QTF feeds wave-drift damping and the tow models
-    B = jt.wave_drift_damping(q, 1.0, 0.1)
+    B = jt.drift.wave_drift_damping(q, 1.0, 0.1)
     assert np.all(np.isfinite(np.asarray(B)))
     path = tmp_path / "q.nc"
     jt.io.save_qtf(q, path, attrs=bem.qtf_attrs(ds, "far_field"))
     import xarray as xr
 
     back = xr.load_dataset(path)
-    for key in ("capytaine_version", "n_panels", "mesh_params", "solver", "qtf_method", "jaxtow_version"):
+    for key in (
+        "capytaine_version",
+        "n_panels",
+        "mesh_params",
+        "solver",
+        "qtf_method",
+        "jaxtow_version",
+    ):
         assert key in back.attrs
     np.testing.assert_array_equal(np.asarray(jt.io.load_qtf(path).values), np.asarray(q.values))
     # a rerun loads every frequency from the cache (same numbers, no solve)
@@ -212,17 +252,28 @@ def test_cli_bem_writes_qtf_databases_and_figures(tmp_path, capsys):
     import xarray as xr
 
     cfg = tmp_path / "tiny.toml"
-    cfg.write_text('[hull]\nkind = "barge2"\npanel_size = 6.0\n[mass]\ncog_z = 10.0\n'
-                   '[waves]\nomega = [0.4, 1.6, 3]\nbeta_deg = [0, 30, 2]\n')
+    cfg.write_text(
+        '[hull]\nkind = "barge2"\npanel_size = 6.0\n[mass]\ncog_z = 10.0\n'
+        "[waves]\nomega = [0.4, 1.6, 3]\nbeta_deg = [0, 30, 2]\n"
+    )
     out = tmp_path / "out"
     main(["bem", str(cfg), "--out", str(out), "--quiet"])
-    for f in ("bem.nc", "qtf_far_field.nc", "qtf_near_field.nc", "summary.json", "fig_qtf.png",
-              "fig_nearfield_parts.png", "fig_rao_beta0.png"):
+    for f in (
+        "bem.nc",
+        "qtf_far_field.nc",
+        "qtf_near_field.nc",
+        "summary.json",
+        "fig_qtf.png",
+        "fig_nearfield_parts.png",
+        "fig_rao_beta0.png",
+    ):
         assert (out / f).exists(), f
     s = json.loads((out / "summary.json").read_text())
     assert s["mesh"] == "barge2_raked" and "roll_damping" in s["assumptions"]
     ds = xr.load_dataset(out / "bem.nc")
-    assert bool(ds.resolved.sel(omega=0.4)) and not bool(ds.resolved.sel(omega=1.6))  # 6 m panels, λ = 24 m
+    assert bool(ds.resolved.sel(omega=0.4)) and not bool(
+        ds.resolved.sel(omega=1.6)
+    )  # 6 m panels, λ = 24 m
     assert "fewer than 6 panels per wavelength" in capsys.readouterr().out
     q = jt.io.load_qtf(out / "qtf_near_field.nc")
     assert np.asarray(q.beta).min() == pytest.approx(-math.radians(30))
@@ -233,6 +284,7 @@ def test_cli_bem_writes_qtf_databases_and_figures(tmp_path, capsys):
 
 
 # ---------------------------------------------------------------- without the extra
+
 
 def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it():
     code = (
@@ -246,14 +298,19 @@ def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it():
         "try:\n    from jaxtow.cli import main; main(['bem', 'barge1', '--out', 'x'])\nexcept SystemExit as e:\n"
         "    print('EXIT', e)\n"
     )
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=False)
+    r = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=False
+    )
     assert r.returncode == 0, r.stderr
-    assert "IMPORTED False True" in r.stdout  # importing jaxtow (and its meshes) never imports Capytaine
+    assert (
+        "IMPORTED False True" in r.stdout
+    )  # importing jaxtow (and its meshes) never imports Capytaine
     assert "ERR" in r.stdout and "pip install 'jaxtow[bem]'" in r.stdout
     assert "EXIT jaxtow bem:" in r.stdout and "pip install" in r.stdout.split("EXIT")[1]
 
 
 # ---------------------------------------------------------------- converged mesh (slow)
+
 
 @needs_capytaine
 @pytest.mark.slow
@@ -267,13 +324,18 @@ def test_near_field_converges_to_far_field_with_the_mesh():
     benchmark's OUT/cache) to reuse solved frequencies."""
     import os
 
-    _, s = bem.mesh_convergence(lambda p: bem.box_barge_mesh(panel_size=p), [2.0, 1.0],
-                                np.linspace(0.3, 2.1, 12), np.radians([0.0, 15.0, 90.0]),
-                                cache_dir=os.environ.get("JAXTOW_BEM_CACHE"))
+    _, s = bem.mesh_convergence(
+        lambda p: bem.box_barge_mesh(panel_size=p),
+        [2.0, 1.0],
+        np.linspace(0.3, 2.1, 12),
+        np.radians([0.0, 15.0, 90.0]),
+        cache_dir=os.environ.get("JAXTOW_BEM_CACHE"),
+    )
     nv = s.near_vs_far
     for c in ("fx", "fy"):
-        assert float(nv.sel(panel_size=1.0, component=c, zone="all")) < float(nv.sel(panel_size=2.0, component=c,
-                                                                                       zone="all"))
+        assert float(nv.sel(panel_size=1.0, component=c, zone="all")) < float(
+            nv.sel(panel_size=2.0, component=c, zone="all")
+        )
         assert float(nv.sel(panel_size=1.0, component=c, zone="reflection")) < 0.01
 
 
@@ -282,11 +344,14 @@ def test_read_mesh_reads_a_user_hull_file(tmp_path):
     """A WAMIT .gdf hull written from the Barge 1 mesh reads back with the same volume and gets a lid."""
     m = bem.box_barge_mesh(panel_size=6.0)
     q = m.vertices[m.faces]
-    lines = ["box barge", "1.0 9.80665", "0 0", str(len(q))] + [" ".join(f"{c:.10f}" for c in v) for v in q.reshape(-1, 3)]
+    lines = ["box barge", "1.0 9.80665", "0 0", str(len(q))] + [
+        " ".join(f"{c:.10f}" for c in v) for v in q.reshape(-1, 3)
+    ]
     path = tmp_path / "box.gdf"
     path.write_text("\n".join(lines) + "\n")
     r = bem.read_mesh(path)
     assert r.volume == pytest.approx(m.volume, rel=1e-9)
     assert len(r.lid_faces) > 0 and r.name == "box"
-    assert bem.rigid_body(r, cog_z=10.0).stiffness[3, 3] == pytest.approx(bem.rigid_body(m, cog_z=10.0).stiffness[3, 3],
-                                                                             rel=1e-9)
+    assert bem.rigid_body(r, cog_z=10.0).stiffness[3, 3] == pytest.approx(
+        bem.rigid_body(m, cog_z=10.0).stiffness[3, 3], rel=1e-9
+    )

@@ -1,20 +1,21 @@
-"""Bifurcation analysis (issue 11): pitchfork, Hopf, Lyapunov coefficient, limit cycles."""
+"""Bifurcation analysis: pitchfork, Hopf, Lyapunov coefficient, limit cycles."""
 
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import model
 
 import jaxtow as jt
 from jaxtow import continuation as ct
-from jaxtow.equilibrium import _state_from_heading
-
-from helpers import model
+from jaxtow._equilibrium import _state_from_heading
 
 
 @pytest.fixture(scope="module")
 def branches(barge_2a, barge_2b):
-    return {name: ct.equilibrium_branch(model(v, l0=0.5, xp=0.5), "xp", p_range=(0.0, 1.0))
-            for name, v in (("2a", barge_2a), ("2b", barge_2b))}
+    return {
+        name: ct.equilibrium_branch(model(v, l0=0.5, xp=0.5), "xp", p_range=(0.0, 1.0))
+        for name, v in (("2a", barge_2a), ("2b", barge_2b))
+    }
 
 
 @pytest.mark.parametrize("name, expected", [("2a", 0.4227), ("2b", 0.1040)])
@@ -45,8 +46,16 @@ def test_side_branch_points_are_equilibria_and_folds_are_located(branches, barge
         m = model(barge_2b, l0=0.5, xp=float(p))
         assert abs(float(jt.heading_residual(psi, m))) < 1e-10
     # beyond the manoeuvring model's |psi| <= 90 deg the side branch turns back: a fold at 90 deg
-    wide = ct.equilibrium_branch(model(barge_2b, l0=0.5, xp=0.5), "xp", p_range=(0.0, 1.0), psi0=float(child.psi[5]),
-                                 p0=float(child.p[5]), psi_max=1.8, switch=False, ds=0.02)
+    wide = ct.equilibrium_branch(
+        model(barge_2b, l0=0.5, xp=0.5),
+        "xp",
+        p_range=(0.0, 1.0),
+        psi0=float(child.psi[5]),
+        p0=float(child.p[5]),
+        psi_max=1.8,
+        switch=False,
+        ds=0.02,
+    )
     folds = wide.points("fold")
     assert len(folds) == 2 and all(abs(abs(f.psi) - np.pi / 2) < 1e-9 for f in folds)
     for f in folds:
@@ -121,6 +130,7 @@ def test_limit_cycle_matches_long_time_domain_run(barge_2b):
 
 def test_lyapunov_coefficient_of_the_normal_form():
     for a in (-0.7, 0.4):
+
         def f(y, a=a):
             r2 = y[0] ** 2 + y[1] ** 2
             return jnp.stack([-2.0 * y[1] + a * y[0] * r2, 2.0 * y[0] + a * y[1] * r2])
@@ -133,8 +143,9 @@ def test_lyapunov_coefficient_of_the_normal_form():
 def test_hopf_curve_passes_through_the_one_parameter_hopf_point(barge_2b):
     m = model(barge_2b, l0=0.5, xp=0.3)
     h = ct.straight_behind_hopf(m, "xp", (0.2, 0.3))
-    curve = ct.hopf_curve(m, ("xp", "l0"), start=(h, 0.5), ranges=((0.1, 0.6), (0.3, 0.8)), ds=0.02,
-                          max_points=60)
+    curve = ct.hopf_curve(
+        m, ("xp", "l0"), start=(h, 0.5), ranges=((0.1, 0.6), (0.3, 0.8)), ds=0.02, max_points=60
+    )
     assert len(curve) > 5
     for xp, l0 in curve[::5]:
         mm = model(barge_2b, l0=float(l0), xp=float(xp))
@@ -158,7 +169,21 @@ def test_cli_bifurcation(tmp_path):
 
     from jaxtow.cli import main
 
-    assert main(["bifurcation", "--vessel", "barge_2b", "--range", "0.2", "0.45", "--out", str(tmp_path)]) == 0
+    assert (
+        main(
+            [
+                "bifurcation",
+                "--vessel",
+                "barge_2b",
+                "--range",
+                "0.2",
+                "0.45",
+                "--out",
+                str(tmp_path),
+            ]
+        )
+        == 0
+    )
     s = json.loads((tmp_path / "bifurcation_barge_2b_xp.json").read_text())
     hopf = sorted(p["parameter"] for p in s["special_points"] if p["kind"] == "hopf")
     assert len(hopf) == 2 and hopf[0] == pytest.approx(0.2560, abs=1e-4)
@@ -167,7 +192,7 @@ def test_cli_bifurcation(tmp_path):
 
 def test_hurwitz_determinants_know_stability():
     # (λ+1)(λ+2)(λ+3): all minors positive; λ³ + λ (roots 0, ±i): Δ₂ = 0 (the Hopf test)
-    d = np.asarray(ct.hurwitz_determinants(jnp.array([1.0, 6.0, 11.0, 6.0])))
+    d = np.asarray(jt.hurwitz_determinants(jnp.array([1.0, 6.0, 11.0, 6.0])))
     assert np.all(d > 0)
     A = jnp.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -2.0]])  # eigenvalues ±i, -2
     assert abs(float(ct.hopf_test(A))) < 1e-12

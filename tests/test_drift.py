@@ -7,11 +7,12 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import model
 
 import jaxtow as jt
-from helpers import model
-from jaxtow.drift import WaveDriftForce, encounter_frequency, sailing_drift
-from jaxtow.units import G
+from jaxtow._units import G
+from jaxtow.drift import encounter_frequency, sailing_drift
+from jaxtow.forces import WaveDriftForce
 
 W = np.linspace(0.2, 2.0, 19)
 B = np.radians(np.arange(0.0, 181.0, 15.0))
@@ -19,16 +20,21 @@ B = np.radians(np.arange(0.0, 181.0, 15.0))
 
 def _table(w=W, b=B):
     Wg, Bg = np.meshgrid(w, b, indexing="ij")
-    return dict(fx=-1000 * np.cos(Bg) * (1 + 0.3 * Wg), fy=-800 * np.sin(Bg) * Wg,
-                nz=5000 * np.sin(2 * Bg) * Wg**2)
+    return dict(
+        fx=-1000 * np.cos(Bg) * (1 + 0.3 * Wg),
+        fy=-800 * np.sin(Bg) * Wg,
+        nz=5000 * np.sin(2 * Bg) * Wg**2,
+    )
 
 
 def test_constant_qtf_gives_b11_4_omega_f_over_g():
     Wg, Bg = np.meshgrid(W, np.radians(np.arange(-90.0, 91.0, 15.0)), indexing="ij")
     F = -1234.0
-    q = jt.QTF(omega=W, beta=Bg[0], fx=np.full(Wg.shape, F), fy=np.zeros(Wg.shape), nz=np.zeros(Wg.shape))
+    q = jt.drift.QTF(
+        omega=W, beta=Bg[0], fx=np.full(Wg.shape, F), fy=np.zeros(Wg.shape), nz=np.zeros(Wg.shape)
+    )
     for w in (0.5, 1.0, 1.7):
-        Bm = jt.wave_drift_damping(q, w, 0.0)
+        Bm = jt.drift.wave_drift_damping(q, w, 0.0)
         assert float(Bm[0, 0]) == pytest.approx(4 * w * F / G, rel=1e-12)
         # speed-corrected short-wave limit, head seas: F (1 + 4 ω u / g)
         u = 1.5
@@ -41,7 +47,7 @@ def test_autodiff_damping_equals_finite_differences_of_table():
     """At interior nodes the interpolant's derivatives are the three-point differences of
     the table, so Aranha's B from autodiff equals B from finite differences of the data."""
     t = _table()
-    q = jt.QTF.symmetric(omega=W, beta=B, **t)
+    q = jt.drift.QTF.symmetric(omega=W, beta=B, **t)
     bfull = np.asarray(q.beta)
     vals = np.asarray(q.values)
     for i, j in ((5, 14), (10, 16), (12, 13)):
@@ -52,14 +58,16 @@ def test_autodiff_damping_equals_finite_differences_of_table():
         c, s = math.cos(b), math.sin(b)
         col_u = w / G * (w * c * dFw - 2 * s * dFb + 4 * c * F)
         col_v = w / G * (w * s * dFw + 2 * c * dFb + 4 * s * F)
-        Bm = np.asarray(jt.wave_drift_damping(q, w, b))
+        Bm = np.asarray(jt.drift.wave_drift_damping(q, w, b))
         np.testing.assert_allclose(Bm[:, 0], col_u, rtol=1e-10, atol=1e-9)
         np.testing.assert_allclose(Bm[:, 1], col_v, rtol=1e-10, atol=1e-9)
-        np.testing.assert_array_equal(Bm[:, 2], 0.0)  # documented fallback without sectional moments
+        np.testing.assert_array_equal(
+            Bm[:, 2], 0.0
+        )  # documented fallback without sectional moments
 
 
 def test_interpolant_is_c1_and_reproduces_nodes():
-    q = jt.QTF.symmetric(omega=W, beta=B, **_table())
+    q = jt.drift.QTF.symmetric(omega=W, beta=B, **_table())
     vals = np.asarray(q.values)
     for i, j in ((3, 13), (18, 20), (0, 12)):
         np.testing.assert_allclose(q(W[i], float(q.beta[j])), vals[:, i, j], rtol=1e-13, atol=1e-9)
@@ -76,11 +84,14 @@ def test_interpolant_is_c1_and_reproduces_nodes():
 
 
 def test_symmetry_of_forces_and_damping():
-    q = jt.QTF.symmetric(omega=W, beta=B, **_table())
+    q = jt.drift.QTF.symmetric(omega=W, beta=B, **_table())
     for w, b in ((0.7, 0.4), (1.3, 1.1)):
         Fp, Fm = np.asarray(q(w, b)), np.asarray(q(w, -b))
         np.testing.assert_allclose(Fm, Fp * np.array([1, -1, -1]), rtol=1e-12)
-        Bp, Bm = np.asarray(jt.wave_drift_damping(q, w, b)), np.asarray(jt.wave_drift_damping(q, w, -b))
+        Bp, Bm = (
+            np.asarray(jt.drift.wave_drift_damping(q, w, b)),
+            np.asarray(jt.drift.wave_drift_damping(q, w, -b)),
+        )
         # B11, B22 even about head seas; B12, B21 mirrored (odd)
         assert Bm[0, 0] == pytest.approx(Bp[0, 0], rel=1e-10)
         assert Bm[1, 1] == pytest.approx(Bp[1, 1], rel=1e-10)
@@ -92,7 +103,7 @@ def test_symmetry_of_forces_and_damping():
 
 def test_partial_table_flags_heading():
     Wg, Bg = np.meshgrid(W, np.radians(np.arange(-45.0, 46.0, 15.0)), indexing="ij")
-    q = jt.QTF(omega=W, beta=Bg[0], fx=-np.cos(Bg), fy=np.sin(Bg), nz=np.zeros_like(Bg))
+    q = jt.drift.QTF(omega=W, beta=Bg[0], fx=-np.cos(Bg), fy=np.sin(Bg), nz=np.zeros_like(Bg))
     assert bool(q.in_table(0.5)) and not bool(q.in_table(1.0))
     np.testing.assert_allclose(q(1.0, 1.0), q(1.0, math.radians(45.0)))  # clamped, flagged
 
@@ -104,7 +115,9 @@ def test_encounter_frequency():
     assert float(encounter_frequency(1.0, math.pi / 2, 0.0, v=1.0)) == pytest.approx(1.0 + 1.0 / G)
     # tow model: beta = -psi, (u, v) = (cos psi, -sin psi): waves from ahead of the tug, any heading
     for psi in (0.0, 0.3, -1.1):
-        assert float(encounter_frequency(0.7, -psi, 2 * math.cos(psi), 2 * -math.sin(psi))) == pytest.approx(0.7 + 0.49 * 2 / G)
+        assert float(
+            encounter_frequency(0.7, -psi, 2 * math.cos(psi), 2 * -math.sin(psi))
+        ) == pytest.approx(0.7 + 0.49 * 2 / G)
 
 
 def test_wamit_fixture_reads_back(tmp_path):
@@ -138,7 +151,7 @@ def test_wamit_fixture_reads_back(tmp_path):
 
 @pytest.mark.parametrize("suffix", [".nc", ".csv"])
 def test_own_format_round_trip_is_exact(tmp_path, suffix):
-    q = jt.QTF.symmetric(omega=W, beta=B, **_table())
+    q = jt.drift.QTF.symmetric(omega=W, beta=B, **_table())
     jt.io.save_qtf(q, tmp_path / f"q{suffix}")
     back = jt.io.load_qtf(tmp_path / f"q{suffix}")
     np.testing.assert_array_equal(np.asarray(back.values), np.asarray(q.values))
@@ -147,7 +160,7 @@ def test_own_format_round_trip_is_exact(tmp_path, suffix):
 
 
 def _wave_model(vessel, zeta_a, omega=1.0, **kw):
-    q = jt.QTF.symmetric(omega=W, beta=B, **_table())
+    q = jt.drift.QTF.symmetric(omega=W, beta=B, **_table())
     force = WaveDriftForce(qtf=q, omega=omega, zeta_a=zeta_a, scales=jt.presets.barge2_scales())
     return model(vessel, external=force, **kw), force
 
@@ -156,11 +169,16 @@ def test_wave_force_at_zero_speed_is_stationary_qtf(barge_2a):
     m, force = _wave_model(barge_2a, 1.2)
     for psi in (0.0, 0.3, -0.5):
         y = jnp.array([0.0, 0.0, 0.0, 2.5, 0.0, psi])
-        np.testing.assert_allclose(force.dimensional(y), 1.2**2 * np.asarray(force.qtf(1.0, -psi)), rtol=1e-13)
+        np.testing.assert_allclose(
+            force.dimensional(y), 1.2**2 * np.asarray(force.qtf(1.0, -psi)), rtol=1e-13
+        )
         Fnd = np.asarray(force(0.0, y, m))
         sc = jt.presets.barge2_scales()
-        np.testing.assert_allclose(Fnd * np.array([sc.force, sc.force, sc.moment]),
-                                   1.2**2 * np.asarray(force.qtf(1.0, -psi)), rtol=1e-13)
+        np.testing.assert_allclose(
+            Fnd * np.array([sc.force, sc.force, sc.moment]),
+            1.2**2 * np.asarray(force.qtf(1.0, -psi)),
+            rtol=1e-13,
+        )
 
 
 def test_zero_amplitude_reproduces_calm_water(barge_2a):
@@ -170,8 +188,10 @@ def test_zero_amplitude_reproduces_calm_water(barge_2a):
         waves, _ = _wave_model(v, 0.0, xp=xp)
         e = jt.equilibria(waves)
         np.testing.assert_array_equal(np.asarray(e.state), np.asarray(calm.state))
-        np.testing.assert_array_equal(np.asarray(jt.stability(waves, e.state)["max_real"]),
-                                      np.asarray(jt.stability(model(v, xp=xp), calm.state)["max_real"]))
+        np.testing.assert_array_equal(
+            np.asarray(jt.stability(waves, e.state).max_real),
+            np.asarray(jt.stability(model(v, xp=xp), calm.state).max_real),
+        )
 
 
 def test_wave_drift_in_tow_model_equilibria_and_flags(barge_2a):
@@ -208,14 +228,18 @@ def test_capytaine_layout_reader():
     dims = ("omega", "wave_direction", "wave_direction_l")
     coords = {"omega": w, "wave_direction": wd, "wave_direction_l": wd}
     da = xr.DataArray(full, dims=dims, coords=coords)
-    zero = xr.DataArray(np.zeros((3, 3)), dims=("omega", "wave_direction"), coords={"omega": w, "wave_direction": wd})
+    zero = xr.DataArray(
+        np.zeros((3, 3)),
+        dims=("omega", "wave_direction"),
+        coords={"omega": w, "wave_direction": wd},
+    )
     q = jt.io.qtf_from_capytaine(da, zero, zero)
     np.testing.assert_allclose(np.asarray(q.beta), [-0.5, 0.0, 0.5], atol=1e-15)
     np.testing.assert_allclose(np.asarray(q.values[0]), fx)
 
 
 def test_irregular_sailing_drift_and_force(barge_2a):
-    q = jt.QTF.symmetric(omega=W, beta=B, **_table())
+    q = jt.drift.QTF.symmetric(omega=W, beta=B, **_table())
     w = np.linspace(0.3, 3.0, 541)
     sea = jt.waves.Jonswap(hs=2.4, tp=7.0)
     jt.waves.check_frequency_grid(w, 7.0)
@@ -226,20 +250,26 @@ def test_irregular_sailing_drift_and_force(barge_2a):
     assert float(F0[0]) == pytest.approx(float(ref), rel=1e-12)
     # with speed into head seas the surge drift grows (added resistance rises with speed)
     assert float(jt.drift.irregular_sailing_drift(q, w, S, 0.0, 2.0)[0]) < float(F0[0]) < 0
-    f = jt.drift.IrregularWaveDriftForce(qtf=q, spectrum=sea, omega=w, scales=jt.presets.barge2_scales())
+    f = jt.forces.IrregularWaveDriftForce(
+        qtf=q, spectrum=sea, omega=w, scales=jt.presets.barge2_scales()
+    )
     m = model(barge_2a, external=f)
-    e = jt.equilibria(m, n_grid=401)  # a 541-point drift integral per residual: a coarser bracket scan
+    e = jt.equilibria(
+        m, n_grid=401
+    )  # a 541-point drift integral per residual: a coarser bracket scan
     assert np.all(e.residual < 1e-12)
 
 
 def test_local_interpolant_equals_full_slope_tables():
     """QTF.__call__ touches only the entries it needs; it must equal the tensor-product
     Hermite interpolant built from the full slope tables (module docstring)."""
-    from jaxtow.drift.qtf import _hermite, _three_point_slopes
+    from jaxtow._interp import hermite as _hermite, three_point_slopes as _three_point_slopes
 
     def full(q, omega, beta):
         w = jnp.concatenate([jnp.zeros(1), q.omega])
-        v = jnp.moveaxis(jnp.concatenate([jnp.zeros_like(q.values[:, :1]), q.values], axis=1), 1, -1)
+        v = jnp.moveaxis(
+            jnp.concatenate([jnp.zeros_like(q.values[:, :1]), q.values], axis=1), 1, -1
+        )
         m = _three_point_slopes(w, v).at[..., 0].set(0.0).at[..., -1].set(0.0)
         a = _hermite(w, v, m, jnp.maximum(omega, 0.0))
         if q.periodic:
@@ -252,7 +282,13 @@ def test_local_interpolant_equals_full_slope_tables():
     vals = rng.normal(size=(3, w.size, b.size))
     vals[1:, :, [0, -1]] = 0.0
     W, Bq = rng.uniform(0.0, 3.0, 300), rng.uniform(-4.0, 4.0, 300)
-    for q in (jt.QTF.symmetric(omega=w, beta=b, fx=vals[0], fy=vals[1], nz=vals[2]),
-              jt.QTF(omega=w, beta=b, fx=vals[0], fy=vals[1], nz=vals[2])):
-        np.testing.assert_allclose(np.asarray(jax.vmap(q)(W, Bq)),
-                                   np.asarray(jax.vmap(lambda x, y: full(q, x, y))(W, Bq)), rtol=0, atol=1e-13)
+    for q in (
+        jt.drift.QTF.symmetric(omega=w, beta=b, fx=vals[0], fy=vals[1], nz=vals[2]),
+        jt.drift.QTF(omega=w, beta=b, fx=vals[0], fy=vals[1], nz=vals[2]),
+    ):
+        np.testing.assert_allclose(
+            np.asarray(jax.vmap(q)(W, Bq)),
+            np.asarray(jax.vmap(lambda x, y: full(q, x, y))(W, Bq)),
+            rtol=0,
+            atol=1e-13,
+        )

@@ -1,12 +1,12 @@
-"""Equilibria (thesis eqs 6.7-6.13 and the heading residual of MODEL.md section 4)."""
+"""Equilibria (thesis eqs 6.7-6.13 and the heading residual of docs/model.md section 4)."""
 
 import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import central_derivative, model
 
 import jaxtow as jt
-from helpers import central_derivative, model
 
 
 def test_fig_6_3_equilibrium_structure(barge_2a, barge_2b):
@@ -14,7 +14,7 @@ def test_fig_6_3_equilibrium_structure(barge_2a, barge_2b):
     assert len(e) == 1 and e.branch.tolist() == [0]
     e = jt.equilibria(model(barge_2a, xp=0.3))
     assert len(e) == 3 and e.branch.tolist() == [-1, 0, 1]
-    assert np.degrees(e.psi[2]) == pytest.approx(18.6, abs=0.1)  # MODEL.md: ≈ ∓18.6°
+    assert np.degrees(e.psi[2]) == pytest.approx(18.6, abs=0.1)  # docs/model.md: ≈ ∓18.6°
     e = jt.equilibria(model(barge_2b, xp=0.5))
     assert len(e) == 3 and e.branch.tolist() == [-1, 0, 1]
     np.testing.assert_allclose(np.degrees(np.abs(np.asarray(e.psi)[[0, 2]])), 76.0, atol=1.0)
@@ -60,7 +60,7 @@ def test_power_law_towline_equilibria(barge_2b):
 def test_external_force_shifts_equilibrium(barge_2a):
     """A constant sway force moves the straight-behind equilibrium off ψ = 0 and the
     solver still lands on |f| < 1e-12."""
-    m = model(barge_2a, **{"external": jt.ConstantBodyForce(jnp.array([0.0, 0.01, 0.0]))})
+    m = model(barge_2a, **{"external": jt.forces.ConstantBodyForce(jnp.array([0.0, 0.01, 0.0]))})
     e = jt.equilibria(m)
     assert len(e) == 1
     assert abs(float(e.psi[0])) > 1e-3
@@ -69,13 +69,17 @@ def test_external_force_shifts_equilibrium(barge_2a):
 
 def test_slack_equilibrium_is_flagged(barge_2a):
     """An external force that exactly cancels the resistance needs no towline pull."""
-    m = model(barge_2a, xp=0.5, external=jt.ConstantBodyForce(jnp.array([float(barge_2a.R0), 0.0, 0.0])))
+    m = model(
+        barge_2a,
+        xp=0.5,
+        external=jt.forces.ConstantBodyForce(jnp.array([float(barge_2a.R0), 0.0, 0.0])),
+    )
     e = jt.equilibria(m)
     straight = e.select(e.branch == 0)
     assert not bool(straight.taut[0]) and not bool(straight.valid[0])
     assert np.isfinite(straight.state).all()
     # pushed forward harder than the resistance: the vessel would have to be ahead of the tug
-    m = model(barge_2a, xp=0.5, external=jt.ConstantBodyForce(jnp.array([0.2, 0.0, 0.0])))
+    m = model(barge_2a, xp=0.5, external=jt.forces.ConstantBodyForce(jnp.array([0.2, 0.0, 0.0])))
     e = jt.equilibria(m)
     assert not bool(e.select(e.branch == 0).behind_tug[0])
 

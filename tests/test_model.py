@@ -7,9 +7,9 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import central_jacobian, model
 
 import jaxtow as jt
-from helpers import central_jacobian, model
 
 
 def test_stability_coefficient_table_3_7(barge_2a, barge_2b):
@@ -36,14 +36,14 @@ def test_force_breakdown_sums_to_vector_field(barge_2a):
     m = model(barge_2a)
     y = jnp.array([0.9, 0.1, -0.05, 2.6, 0.2, -0.3])
     fb = jt.force_breakdown(0.0, y, m)
-    total = fb["manoeuvring"] + fb["towline"] + fb["coupling"] + fb["external"]
+    total = fb.manoeuvring + fb.towline + fb.coupling + fb.external
     dy = jt.vector_field(0.0, y, m)
-    np.testing.assert_allclose(dy[:3], total / fb["inertia"], rtol=1e-14)
+    np.testing.assert_allclose(dy[:3], total / fb.inertia, rtol=1e-14)
     # towline terms, eqs 2.8-2.10
-    T = float(fb["tension"])
+    T = float(fb.tension)
     assert T == pytest.approx(float(m.towline.EA) * (2.6 / 2.5 - 1))
     a = 0.2 - 0.3
-    np.testing.assert_allclose(fb["towline"], [T * np.cos(a), -T * np.sin(a), -T * 0.5 * np.sin(a)])
+    np.testing.assert_allclose(fb.towline, [T * np.cos(a), -T * np.sin(a), -T * 0.5 * np.sin(a)])
 
 
 def test_resistance_opposes_motion_both_ways(barge_2a):
@@ -65,7 +65,10 @@ def test_kinematics_match_geometry(barge_2a):
 
     h = 1e-6
     l, g, p = y[3], y[4], y[5]
-    vel = (cog(l + h * dy[3], g + h * dy[4], p + h * dy[5], h) - cog(l - h * dy[3], g - h * dy[4], p - h * dy[5], -h)) / (2 * h)
+    vel = (
+        cog(l + h * dy[3], g + h * dy[4], p + h * dy[5], h)
+        - cog(l - h * dy[3], g - h * dy[4], p - h * dy[5], -h)
+    ) / (2 * h)
     # body velocity rotated to earth axes: body x along (cos ψ, sin ψ), body y along
     # (−sin ψ, cos ψ); moving with the tug then means (u', v') = (cos ψ, −sin ψ)
     u, v = y[0], y[1]
@@ -99,11 +102,19 @@ def test_autodiff_jacobian_matches_finite_differences(barge_2a, barge_2b):
         np.testing.assert_allclose(J, Jfd, rtol=1e-6, atol=1e-6)
 
 
-@pytest.mark.parametrize("kwargs, name", [
-    (dict(l0=0.0), "l0"), (dict(l0=-1.0), "l0"), (dict(EA=0.0), "EA"), (dict(EA=-5.0), "EA"),
-    (dict(l0=float("nan")), "l0"), (dict(EA=float("inf")), "EA"), (dict(xp=1.5), "xp"),
-    (dict(xp=-0.1), "xp"),
-])
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (dict(l0=0.0), "l0"),
+        (dict(l0=-1.0), "l0"),
+        (dict(EA=0.0), "EA"),
+        (dict(EA=-5.0), "EA"),
+        (dict(l0=float("nan")), "l0"),
+        (dict(EA=float("inf")), "EA"),
+        (dict(xp=1.5), "xp"),
+        (dict(xp=-0.1), "xp"),
+    ],
+)
 def test_bad_towline_input_names_parameter(kwargs, name):
     base = dict(l0=2.5, xp=0.5, EA=300.0)
     base.update(kwargs)

@@ -1,4 +1,4 @@
-"""Tow resistance budget, required pull and operating speed (issue 9)."""
+"""Tow resistance budget, required pull and operating speed."""
 
 import math
 
@@ -9,14 +9,14 @@ import pytest
 
 import jaxtow as jt
 from jaxtow import resistance as R
-from jaxtow.units import RHO_SEA
+from jaxtow._units import RHO_SEA
 
 TF = 9.80665e3
 
 
 @pytest.fixture(scope="module")
 def tow():
-    return R.barge2_resistance("2a")
+    return jt.presets.barge2_resistance("2a")
 
 
 @pytest.fixture(scope="module")
@@ -32,14 +32,16 @@ def test_relative_wind_is_eqs_2_23_2_24():
     for a in np.radians([0.0, 30.0, 90.0, 150.0, 180.0, -60.0]):
         U2, alpha = R.relative_flow(uv, 0.0, W, a)
         assert float(U2) == pytest.approx(uv**2 + W**2 + 2 * uv * W * math.cos(a), rel=1e-13)
-        assert float(alpha) == pytest.approx(math.atan2(W * math.sin(a), uv + W * math.cos(a)), abs=1e-13)
+        assert float(alpha) == pytest.approx(
+            math.atan2(W * math.sin(a), uv + W * math.cos(a)), abs=1e-13
+        )
     # zero relative flow: zero load and a finite gradient
-    g = jax.grad(lambda u: R.barge2_resistance().wind(u, 0.0, 3.0, math.pi)[0])(3.0)
+    g = jax.grad(lambda u: jt.presets.barge2_resistance().wind(u, 0.0, 3.0, math.pi)[0])(3.0)
     assert np.isfinite(float(g))
 
 
 def test_coefficient_table_nodes_symmetry_and_errors():
-    t = R.barge2_wind_table()
+    t = jt.presets.barge2_wind_table()
     src = jt.presets.BARGE2_WIND_TABLE
     for a, cx, cy, cn in zip(src["angle_deg"], src["cx"], src["cy"], src["cn"]):
         c = np.asarray(t(math.radians(a)))
@@ -47,7 +49,9 @@ def test_coefficient_table_nodes_symmetry_and_errors():
         np.testing.assert_allclose(np.asarray(t(-math.radians(a))), [cx, -cy, -cn], atol=1e-14)
     # periodic: continuous with continuous slope through 180 deg
     d = jax.jacfwd(t)
-    np.testing.assert_allclose(np.asarray(d(math.pi - 1e-9)), np.asarray(d(-math.pi + 1e-9)), atol=1e-6)
+    np.testing.assert_allclose(
+        np.asarray(d(math.pi - 1e-9)), np.asarray(d(-math.pi + 1e-9)), atol=1e-6
+    )
     assert t.illustrative and "ILLUSTRATIVE" in t.label
     with pytest.raises(ValueError, match="'cy' must be 0"):
         R.CoefficientTable.symmetric([0, 90, 180], [1, 0, -1], [0.1, 1, 0], [0, 0, 0])
@@ -65,7 +69,9 @@ def test_current_load_from_manoeuvring_derivatives(tow, barge_2a):
     assert F[0] == pytest.approx(-0.5 * RHO_SEA * T * L * float(barge_2a.R0) * 1.5**2, rel=1e-13)
     # beam current from port (alpha = 90 deg): sway force = Yv' + Yvvv' on the L T area
     F = np.asarray(tow.hull(0.0, 0.0, 1.0, math.pi / 2))
-    assert F[1] == pytest.approx(0.5 * RHO_SEA * L * T * float(barge_2a.Yv + barge_2a.Yvvv), rel=1e-13)
+    assert F[1] == pytest.approx(
+        0.5 * RHO_SEA * L * T * float(barge_2a.Yv + barge_2a.Yvvv), rel=1e-13
+    )
 
 
 def test_operating_speed_closed_form_quadratic_pull(calm, barge_2a):
@@ -76,20 +82,22 @@ def test_operating_speed_closed_form_quadratic_pull(calm, barge_2a):
         p = R.operating_speed(calm, tug, CALM_SEA)
         exact = math.sqrt(eta * bp / (k + c + eta * bp / uf**2))
         assert float(p.speed) == pytest.approx(exact, rel=1e-10)
-        assert int(p.status) == 0
+        assert p.result == R.RESULTS.successful
         assert float(p.pull) == pytest.approx(float(p.budget.total), rel=1e-9)
         assert float(p.transit_time(500 * 1852.0)) == pytest.approx(500 * 1852.0 / exact, rel=1e-9)
 
 
 def test_budget_sums_and_trends(tow):
-    sea = R.sea_state("sailing", tp=7.0)
+    sea = jt.presets.sea_state("sailing", tp=7.0)
     speeds = jnp.linspace(0.0, 3.5, 8)
     b = R.resistance_grid(tow, sea, speeds, jnp.array([6.0, 7.0, 8.0]))
     r = np.asarray(b.resistance)
     np.testing.assert_allclose(r.sum(-1), np.asarray(b.total), rtol=1e-14)
     np.testing.assert_allclose(np.asarray(b.shares).sum(-1), 100.0, rtol=1e-12)
     waves = r[:, :, R.COMPONENTS.index("waves")]
-    assert np.all(np.diff(waves, axis=0) > 0)  # wave drift rises with speed in absolute terms (thesis 7.2)
+    assert np.all(
+        np.diff(waves, axis=0) > 0
+    )  # wave drift rises with speed in absolute terms (thesis 7.2)
     current = r[:, 1, R.COMPONENTS.index("current")]
     np.testing.assert_allclose(current, current[-1] * (np.asarray(speeds) / 3.5) ** 2, rtol=1e-12)
     # body loads: along-course resistance of a head-on budget is −Fx
@@ -98,8 +106,10 @@ def test_budget_sums_and_trends(tow):
 
 def test_operating_speed_falls_with_hs_and_gradients_match_fd(tow):
     def speed(hs, wind, bp):
-        tug = R.illustrative_tug(bollard_pull=bp)
-        return R.operating_speed(tow, tug, R.sea_state("sailing", hs=hs, wind_speed=wind)).speed
+        tug = jt.presets.illustrative_tug(bollard_pull=bp)
+        return R.operating_speed(
+            tow, tug, jt.presets.sea_state("sailing", hs=hs, wind_speed=wind)
+        ).speed
 
     x0 = (2.4, 10.0, 40 * TF)
     u = [float(speed(h, 10.0, 40 * TF)) for h in (1.0, 2.4, 4.0)]
@@ -115,29 +125,35 @@ def test_operating_speed_falls_with_hs_and_gradients_match_fd(tow):
 
 
 def test_required_pull(tow):
-    sea = R.sea_state("survival")
-    tug = R.illustrative_tug()
+    sea = jt.presets.sea_state("survival")
+    tug = jt.presets.illustrative_tug()
     req = R.required_pull(tow, sea, tug=tug)
     b = R.resistance(tow, sea, 0.0)
     assert float(req.towing_force) == pytest.approx(float(b.total), rel=1e-14)
     assert float(req.bollard_pull) == pytest.approx(float(b.total) / 0.75, rel=1e-14)
     assert float(b.resistance[0]) == 0.0  # no current, no speed: no hull resistance (fig. 7.2)
     # at a speed: the tug with exactly that bollard pull makes exactly that speed
-    req2 = R.required_pull(tow, R.sea_state("sailing"), speed=2.5, tug=tug)
-    p = R.operating_speed(tow, R.illustrative_tug(bollard_pull=req2.bollard_pull), R.sea_state("sailing"))
+    req2 = R.required_pull(tow, jt.presets.sea_state("sailing"), speed=2.5, tug=tug)
+    p = R.operating_speed(
+        tow,
+        jt.presets.illustrative_tug(bollard_pull=req2.bollard_pull),
+        jt.presets.sea_state("sailing"),
+    )
     assert float(p.speed) == pytest.approx(2.5, rel=1e-9)
 
 
 def test_invalid_inputs_give_clear_messages(tow, calm):
     with pytest.raises(ValueError, match="cannot hold the tow.*bollard_pull"):
-        R.operating_speed(tow, R.illustrative_tug(bollard_pull=5 * TF), R.sea_state("survival"))
+        R.operating_speed(
+            tow, jt.presets.illustrative_tug(bollard_pull=5 * TF), jt.presets.sea_state("survival")
+        )
     with pytest.raises(ValueError, match=r"Froude number Fn = 0\.\d+ >= 0.15"):
-        R.operating_speed(calm, R.illustrative_tug(bollard_pull=300 * TF), CALM_SEA)
+        R.operating_speed(calm, jt.presets.illustrative_tug(bollard_pull=300 * TF), CALM_SEA)
     following = R.SeaState(hs=0.0, tp=8.0, current_speed=9.0, current_angle=math.pi)
     with pytest.raises(ValueError, match="no intersection .* below the tug's top speed"):
-        R.operating_speed(calm, R.illustrative_tug(), following)
-    p = R.operating_speed(calm, R.illustrative_tug(), following, check=False)
-    assert int(p.status) == 2 and not bool(p.valid) and np.isfinite(float(p.speed))
+        R.operating_speed(calm, jt.presets.illustrative_tug(), following)
+    p = R.operating_speed(calm, jt.presets.illustrative_tug(), following, throw=False)
+    assert p.result == R.RESULTS.no_crossing and not bool(p.valid) and np.isfinite(float(p.speed))
     with pytest.raises(ValueError, match="'bollard_pull' must be > 0"):
         R.Tug(bollard_pull=-1.0, free_speed=6.0)
     with pytest.raises(ValueError, match="'pulls' must be >= 0"):
@@ -145,32 +161,42 @@ def test_invalid_inputs_give_clear_messages(tow, calm):
     with pytest.raises(ValueError, match="'hs' must be >= 0"):
         R.SeaState(hs=-1.0, tp=8.0)
     with pytest.raises(ValueError, match="'method'"):
-        R.barge2_resistance(method="nope")
-    # under jit: the status becomes an error that names it, not a NaN
-    f = jax.jit(lambda bp: R.operating_speed(calm, R.illustrative_tug(bollard_pull=bp), CALM_SEA).speed)
+        jt.presets.barge2_resistance(method="nope")
+    # under jit: the result code becomes an error that names it, not a NaN
+    f = jax.jit(
+        lambda bp: (
+            R.operating_speed(calm, jt.presets.illustrative_tug(bollard_pull=bp), CALM_SEA).speed
+        )
+    )
     with pytest.raises(Exception, match="Froude"):
         f(300 * TF)
 
 
 def test_tabulated_pull_curve_matches_quadratic(calm):
     s = np.linspace(0.0, 7.0, 29)
-    quad = R.illustrative_tug()
+    quad = jt.presets.illustrative_tug()
     tab = R.Tug.from_table(s, 40 * TF * (1 - (s / 7.0) ** 2), efficiency=0.75)
     a = R.operating_speed(calm, quad, CALM_SEA).speed
     b = R.operating_speed(calm, tab, CALM_SEA).speed
-    assert float(b) == pytest.approx(float(a), rel=1e-6)  # cubic Hermite of a quadratic: exact to rounding
+    assert float(b) == pytest.approx(
+        float(a), rel=1e-6
+    )  # cubic Hermite of a quadratic: exact to rounding
 
 
 def test_cli_table_and_config_errors(tmp_path, capsys):
-    from jaxtow._cli_resistance import build, evaluate, format_table, read_config
+    from jaxtow.cli.resistance import build, evaluate, format_table, read_config
 
     cfg = read_config("barge2")
     tow, tug, seas, heading, route = build(cfg)
-    assert [s.name for s in seas] == ["survival", "sailing"] and route == pytest.approx(500 * 1852.0)
+    assert [s.name for s in seas] == ["survival", "sailing"] and route == pytest.approx(
+        500 * 1852.0
+    )
     row = evaluate(tow, tug, seas[1], heading, route, n_tp=5)
     text = format_table([row], tug, route)
     assert "sailing" in text and f"{row['operating_speed']:.2f}" in text
-    assert row["operating_speed"] < row["physical_tp_range"][1]  # sanity: a speed in m/s, a range in s
+    assert (
+        row["operating_speed"] < row["physical_tp_range"][1]
+    )  # sanity: a speed in m/s, a range in s
     bad = dict(cfg, tug=dict(cfg["tug"], bolard_pull_t=3.0))
     with pytest.raises(ValueError, match=r"unknown key\(s\) \['bolard_pull_t'\]"):
         build(bad)
@@ -188,8 +214,12 @@ def test_cli_resistance_writes_outputs(tmp_path, capsys):
     ds = jt.io.load_dataset(tmp_path / "resistance_sailing.nc")
     np.testing.assert_allclose(ds.resistance.sum("component"), ds.total, rtol=1e-12)
     assert "ILLUSTRATIVE" in ds.attrs["assumed_wind_table"]
-    for f in ("budget_vs_tp_survival.png", "budget_vs_speed_sailing.png", "operating_point_sailing.png",
-              "summary.json"):
+    for f in (
+        "budget_vs_tp_survival.png",
+        "budget_vs_speed_sailing.png",
+        "operating_point_sailing.png",
+        "summary.json",
+    ):
         assert (tmp_path / f).is_file()
 
 

@@ -5,11 +5,11 @@ import math
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import model
 
 import jaxtow as jt
-from helpers import model
-from jaxtow.metrics import damping_ratio, fishtail_metrics, force_history, trajectory
-from jaxtow.simulate import choose_solver, initial_state, simulate, simulate_batch
+from jaxtow._metrics import damping_ratio, fishtail_metrics, force_history, trajectory
+from jaxtow._simulate import choose_solver, initial_state, simulate, simulate_batch
 
 
 def test_thesis_initial_condition_2b_converges_2a_fishtails(barge_2a, barge_2b):
@@ -49,7 +49,9 @@ def test_time_domain_agrees_with_linear_stability(barge_2a, barge_2b):
             y_eq = jt.analytic_equilibria(m).state[1]
             lam.append(float(jt.max_real_eigenvalue(m, y_eq)))
             y0s.append(np.asarray(y_eq) + np.array([0, 0, 0, 0, eps, eps]))
-        sims = simulate_batch(base, np.stack(y0s), t1=300.0, params={"xp": xp, "l0": l0}, n_save=601)
+        sims = simulate_batch(
+            base, np.stack(y0s), t1=300.0, params={"xp": xp, "l0": l0}, n_save=601
+        )
         assert bool(np.all(sims.success))
         for k, mr in enumerate(lam):
             final = np.asarray(sims.ys[k, -1])
@@ -69,7 +71,9 @@ def test_damping_ratio_of_linear_oscillator(zeta):
     wd = wn * math.sqrt(1 - zeta**2)
     t = np.linspace(0, 60, 6001)
     # free response from rest at x = 1: extrema exactly at t = kπ/ωd
-    x = 2.0 + np.exp(-zeta * wn * t) * (np.cos(wd * t) + zeta / math.sqrt(1 - zeta**2) * np.sin(wd * t))
+    x = 2.0 + np.exp(-zeta * wn * t) * (
+        np.cos(wd * t) + zeta / math.sqrt(1 - zeta**2) * np.sin(wd * t)
+    )
     d = damping_ratio(t, x, x_final=2.0)
     assert d["method"] == "log_decrement"
     assert d["zeta"] == pytest.approx(zeta, rel=0.01)

@@ -4,10 +4,10 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import central_derivative, model
 
 import jaxtow as jt
-from jaxtow.stability import routh_first_column
-from helpers import central_derivative, model
+from jaxtow._stability import routh_first_column
 
 
 def test_fig_6_4_stability_over_towline_length(barge_2a, barge_2b):
@@ -34,7 +34,9 @@ def test_routh_hurwitz_agrees_with_eigenvalues(barge_2a, barge_2b):
         ds = jt.sweep(model(v), {"xp": np.linspace(0.0, 0.6, 13), "l0": np.array([0.3, 1.0, 2.5])})
         ok = ds["valid"].values & (np.abs(ds["max_real"].values) > 1e-6)
         assert ok.sum() > 40
-        np.testing.assert_array_equal(ds["routh_hurwitz"].values[ok], ds["stability"].values[ok] < 0)
+        np.testing.assert_array_equal(
+            ds["routh_hurwitz"].values[ok], ds["stability"].values[ok] < 0
+        )
 
 
 def test_characteristic_polynomial_matches_eigenvalues(barge_2b):
@@ -42,8 +44,12 @@ def test_characteristic_polynomial_matches_eigenvalues(barge_2b):
     y = jt.equilibria(m).state[1]
     A = jt.jacobian(m, y)
     c = jt.characteristic_polynomial(A)
-    np.testing.assert_allclose(np.sort_complex(np.roots(np.asarray(c))),
-                               np.sort_complex(np.asarray(jt.eigenvalues(m, y))), rtol=1e-8, atol=1e-10)
+    np.testing.assert_allclose(
+        np.sort_complex(np.roots(np.asarray(c))),
+        np.sort_complex(np.asarray(jt.eigenvalues(m, y))),
+        rtol=1e-8,
+        atol=1e-10,
+    )
 
 
 def test_classification_and_marginal():

@@ -8,9 +8,9 @@ import textwrap
 
 import numpy as np
 import pytest
+from helpers import model
 
 import jaxtow as jt
-from helpers import model
 from jaxtow.io import load_dataset, save_dataset
 
 
@@ -55,14 +55,21 @@ def test_analytic_and_numerical_sweeps_agree(barge_2a):
         b = np.where(ana["found"], ana[key], np.inf)
         order_a = np.argsort(np.where(num["found"], num["psi"], np.inf), axis=-1)
         order_b = np.argsort(np.where(ana["found"], ana["psi"], np.inf), axis=-1)
-        np.testing.assert_allclose(np.take_along_axis(a, order_a, -1), np.take_along_axis(b, order_b, -1),
-                                   atol=1e-9)
+        np.testing.assert_allclose(
+            np.take_along_axis(a, order_a, -1), np.take_along_axis(b, order_b, -1), atol=1e-9
+        )
 
 
-@pytest.mark.parametrize("grid, name", [
-    ({"l0": [1.0, -1.0]}, "l0"), ({"EA": [0.0]}, "EA"), ({"xp": [0.5, 1.7]}, "xp"),
-    ({"a22": [np.nan]}, "a22"), ({"nonsense": [1.0]}, "nonsense"),
-])
+@pytest.mark.parametrize(
+    "grid, name",
+    [
+        ({"l0": [1.0, -1.0]}, "l0"),
+        ({"EA": [0.0]}, "EA"),
+        ({"xp": [0.5, 1.7]}, "xp"),
+        ({"a22": [np.nan]}, "a22"),
+        ({"nonsense": [1.0]}, "nonsense"),
+    ],
+)
 def test_sweep_rejects_bad_grid(barge_2a, grid, name):
     with pytest.raises(ValueError, match=repr(name)):
         jt.sweep_arrays(model(barge_2a), grid)
@@ -95,7 +102,7 @@ _SHARD_SCRIPT = textwrap.dedent("""
             np.testing.assert_array_equal(a[k], b[k])
     # the chunk really is split across the 4 devices
     from jax.sharding import Mesh, NamedSharding, PartitionSpec as P
-    from jaxtow.sweep import make_batched_kernel
+    from jaxtow._sweep import make_batched_kernel
     sh = NamedSharding(Mesh(np.array(jax.devices()), ("points",)), P("points"))
     k = make_batched_kernel(method="numerical", n_grid=2001, max_roots=4, psi_range=np.pi / 2,
                             routh_hurwitz=True, eig_method="polynomial")
@@ -106,9 +113,12 @@ _SHARD_SCRIPT = textwrap.dedent("""
 
 
 def test_sharded_sweep_identical_to_single_device():
-    env = dict(os.environ, XLA_FLAGS="--xla_force_host_platform_device_count=4", JAX_PLATFORMS="cpu")
-    out = subprocess.run([sys.executable, "-c", _SHARD_SCRIPT], env=env, capture_output=True,
-                         text=True, timeout=600)
+    env = dict(
+        os.environ, XLA_FLAGS="--xla_force_host_platform_device_count=4", JAX_PLATFORMS="cpu"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", _SHARD_SCRIPT], env=env, capture_output=True, text=True, timeout=600
+    )
     assert out.returncode == 0, out.stderr[-3000:]
     assert "SHARDED_OK" in out.stdout
 
@@ -127,7 +137,12 @@ def test_large_batch_sweep_completes():
     """Regression: several batched LAPACK calls in one kernel (Hurwitz determinants via
     jnp.linalg.det) deadlocked XLA's CPU runtime on chunks of thousands of points. The
     sweep runs in a subprocess so that a hang fails the test instead of stalling the run."""
-    out = subprocess.run([sys.executable, "-c", _LARGE_SCRIPT], capture_output=True, text=True,
-                         timeout=300, env=dict(os.environ, JAX_PLATFORMS="cpu"))
+    out = subprocess.run(
+        [sys.executable, "-c", _LARGE_SCRIPT],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        env=dict(os.environ, JAX_PLATFORMS="cpu"),
+    )
     assert out.returncode == 0, out.stderr[-3000:]
     assert "LARGE_OK" in out.stdout

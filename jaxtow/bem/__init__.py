@@ -21,6 +21,7 @@ ImportError that says how to install it; the rest of jaxtow never imports it.
 This is a NumPy pre-processor: it produces tables; the differentiable JAX models consume them.
 """
 
+from . import reference as reference
 from .meshes import (
     HullMesh as HullMesh,
     barge2_mesh as barge2_mesh,
@@ -43,7 +44,6 @@ from .solve import (
     rigid_body as rigid_body,
     solve_frequency as solve_frequency,
 )
-from . import reference as reference
 
 
 def available() -> bool:
@@ -53,3 +53,25 @@ def available() -> bool:
     except ImportError:
         return False
     return True
+
+
+__all__ = [
+    "HullMesh",
+    "barge2_mesh",
+    "box_barge_mesh",
+    "raked_barge_mesh",
+    "vertical_cylinder_mesh",
+    "INSTALL_HINT",
+    "BEMDrift",
+    "RigidBody",
+    "bem_drift",
+    "box_barge_drift",
+    "mesh_convergence",
+    "qtf_attrs",
+    "qtf_from_bem",
+    "rao",
+    "read_mesh",
+    "require_capytaine",
+    "rigid_body",
+    "solve_frequency",
+]

@@ -3,7 +3,7 @@
 A `HullMesh` is the wetted hull below the mean waterline z = 0 as flat panels (quads;
 a triangle repeats its last vertex), with the normals pointing *out of the hull, into the
 water* (Capytaine's convention), plus a lid: the waterplane at z = 0, panelled, used by
-Capytaine to remove the irregular frequencies (shared/notes/capytaine.md: the first one of
+Capytaine to remove the irregular frequencies (docs/bem.md: the first one of
 a 76.2 × 24.4 × 5 m box lies near 1.5 rad/s, inside the thesis's range).
 
 Axes: x forward from midships, y to port, z up from the mean waterline (metres), the body
@@ -57,7 +57,9 @@ class HullMesh:
         q = self._quads()
         t1, t2 = q[:, [0, 1, 2]], q[:, [0, 2, 3]]
         a1, a2 = _tri_area(t1), _tri_area(t2)
-        c = (a1[:, None] * t1.mean(1) + a2[:, None] * t2.mean(1)) / np.maximum(a1 + a2, 1e-300)[:, None]
+        c = (a1[:, None] * t1.mean(1) + a2[:, None] * t2.mean(1)) / np.maximum(a1 + a2, 1e-300)[
+            :, None
+        ]
         return c
 
     @property
@@ -114,7 +116,14 @@ class HullMesh:
         ixx = np.sum((x0 * x0 + x0 * x1 + x1 * x1) * cr) / 12.0  # ∬ x² dA
         iyy = np.sum((y0 * y0 + y0 * y1 + y1 * y1) * cr) / 12.0
         ixy = np.sum((x0 * y1 + 2 * x0 * y0 + 2 * x1 * y1 + x1 * y0) * cr) / 24.0
-        return dict(area=float(area), sx=float(sx), sy=float(sy), ixx=float(ixx), iyy=float(iyy), ixy=float(ixy))
+        return dict(
+            area=float(area),
+            sx=float(sx),
+            sy=float(sy),
+            ixx=float(ixx),
+            iyy=float(iyy),
+            ixy=float(ixy),
+        )
 
     def centre_of_buoyancy(self) -> np.ndarray:
         """(x_B, y_B, z_B) [m], exact for flat panels: ∇ x_B,i = ∬ ½ x_i² n_i dS (no sum)."""
@@ -147,7 +156,9 @@ def _patch(corner, n_s, n_t, outward, grading=(0.0, 0.0)):
     S, T = np.meshgrid(s, t, indexing="ij")
     verts = corner(S, T).reshape(-1, 3)
     idx = np.arange((n_s + 1) * (n_t + 1)).reshape(n_s + 1, n_t + 1)
-    faces = np.stack([idx[:-1, :-1], idx[1:, :-1], idx[1:, 1:], idx[:-1, 1:]], axis=-1).reshape(-1, 4)
+    faces = np.stack([idx[:-1, :-1], idx[1:, :-1], idx[1:, 1:], idx[:-1, 1:]], axis=-1).reshape(
+        -1, 4
+    )
     q = verts[faces]
     n = np.cross(q[:, 2] - q[:, 0], q[:, 3] - q[:, 1])
     flip = n @ np.asarray(outward, float) < 0
@@ -186,9 +197,17 @@ def _lid(xmin, xmax, ymin, ymax, panel_size):
     return _patch(corner, _n(xmax - xmin, panel_size), _n(ymax - ymin, panel_size), (0, 0, -1))
 
 
-def raked_barge_mesh(length: float, breadth: float, draft: float, rake: float = 0.0, *,
-                     panel_size: float = 2.0, grading: float = 0.0, lid: bool = True,
-                     name: str = "raked_barge") -> HullMesh:
+def raked_barge_mesh(
+    length: float,
+    breadth: float,
+    draft: float,
+    rake: float = 0.0,
+    *,
+    panel_size: float = 2.0,
+    grading: float = 0.0,
+    lid: bool = True,
+    name: str = "raked_barge",
+) -> HullMesh:
     """Barge with a rectangular L × B waterline whose bow and stern faces run straight from
     the waterline (x = ±L/2) down to the keel (x = ±(L/2 − rake)); ``rake = 0`` is a box.
     ``grading`` in [0, 1] clusters the panels towards every edge (cosine spacing, the same
@@ -206,43 +225,73 @@ def raked_barge_mesh(length: float, breadth: float, draft: float, rake: float = 
         def corner(S, Tt):  # Tt = 0 at the waterline, 1 at the keel
             x0, x1 = -L2 + a * Tt, L2 - a * Tt
             return np.stack([x0 + (x1 - x0) * S, sign * B2 * np.ones_like(S), -T * Tt], -1)
+
         return _patch(corner, nx, nz, (0, sign, 0), (grading, grading))
 
     def end(sign):
         def corner(S, Tt):
             return np.stack([sign * (L2 - a * Tt), -B2 + 2 * B2 * S, -T * Tt], -1)
+
         return _patch(corner, ny, nz, (sign * T, 0, -a), (grading, grading))
 
     def bottom(S, Tt):
         return np.stack([-(L2 - a) + 2 * (L2 - a) * S, -B2 + 2 * B2 * Tt, -T * np.ones_like(S)], -1)
 
-    v, f = _join([side(1), side(-1), end(1), end(-1), _patch(bottom, nx, ny, (0, 0, -1), (grading, grading))])
-    lv, lf = _lid(-L2, L2, -B2, B2, panel_size) if lid else (np.zeros((0, 3)), np.zeros((0, 4), int))
-    params = dict(length=float(length), breadth=float(breadth), draft=T, rake=a, panel_size=float(panel_size),
-                  grading=float(grading))
+    v, f = _join(
+        [side(1), side(-1), end(1), end(-1), _patch(bottom, nx, ny, (0, 0, -1), (grading, grading))]
+    )
+    lv, lf = (
+        _lid(-L2, L2, -B2, B2, panel_size) if lid else (np.zeros((0, 3)), np.zeros((0, 4), int))
+    )
+    params = dict(
+        length=float(length),
+        breadth=float(breadth),
+        draft=T,
+        rake=a,
+        panel_size=float(panel_size),
+        grading=float(grading),
+    )
     return HullMesh(v, f, lv, lf, name, float(panel_size), params)
 
 
-def box_barge_mesh(length: float = 76.2, breadth: float = 24.4, draft: float | None = None, *,
-                   panel_size: float = 2.0, grading: float = 0.0, lid: bool = True) -> HullMesh:
+def box_barge_mesh(
+    length: float = 76.2,
+    breadth: float = 24.4,
+    draft: float | None = None,
+    *,
+    panel_size: float = 2.0,
+    grading: float = 0.0,
+    lid: bool = True,
+) -> HullMesh:
     """Barge 1: the wall-sided box (thesis section 3.5). The draft defaults to the documented
     estimate `jaxtow.presets.ASSUMPTIONS['draft']` (5.0 m; not in the thesis text)."""
     T = presets.ASSUMPTIONS["draft"]["value"] if draft is None else draft
-    return raked_barge_mesh(length, breadth, T, 0.0, panel_size=panel_size, grading=grading, lid=lid,
-                            name="barge1_box")
+    return raked_barge_mesh(
+        length, breadth, T, 0.0, panel_size=panel_size, grading=grading, lid=lid, name="barge1_box"
+    )
 
 
-def barge2_mesh(draft: float | None = None, *, panel_size: float = 2.0, grading: float = 0.0,
-                lid: bool = True) -> HullMesh:
+def barge2_mesh(
+    draft: float | None = None, *, panel_size: float = 2.0, grading: float = 0.0, lid: bool = True
+) -> HullMesh:
     """Barge 2: 76.2 × 24.4 m with raked bow and stern (`jaxtow.presets.barge2_rake`: the rake
     that matches C_B = 0.928 of the published m', a documented estimate)."""
     r = presets.barge2_rake(draft)
-    return raked_barge_mesh(presets.BARGE2_LENGTH, presets.BARGE2_BREADTH, r["draft"], r["extent"],
-                            panel_size=panel_size, grading=grading, lid=lid, name="barge2_raked")
+    return raked_barge_mesh(
+        presets.BARGE2_LENGTH,
+        presets.BARGE2_BREADTH,
+        r["draft"],
+        r["extent"],
+        panel_size=panel_size,
+        grading=grading,
+        lid=lid,
+        name="barge2_raked",
+    )
 
 
-def vertical_cylinder_mesh(radius: float, draft: float, *, panel_size: float = 1.0, bottom: bool = True,
-                           lid: bool = True) -> HullMesh:
+def vertical_cylinder_mesh(
+    radius: float, draft: float, *, panel_size: float = 1.0, bottom: bool = True, lid: bool = True
+) -> HullMesh:
     """Vertical circular cylinder from z = 0 to z = −draft (an inscribed polygon of
     ceil(2πR / panel_size) sides). ``bottom=False`` leaves the base open, for a cylinder that
     stands on the sea floor (draft = water depth)."""
@@ -266,8 +315,12 @@ def vertical_cylinder_mesh(radius: float, draft: float, *, panel_size: float = 1
     if bottom:
         patches.append(_disc(radius, nth, nr, -draft, down=True))
     v, f = _join(patches)
-    lv, lf = _disc(radius, nth, nr, 0.0, down=True) if lid else (np.zeros((0, 3)), np.zeros((0, 4), int))
-    params = dict(radius=float(radius), draft=float(draft), bottom=bool(bottom), panel_size=float(panel_size))
+    lv, lf = (
+        _disc(radius, nth, nr, 0.0, down=True) if lid else (np.zeros((0, 3)), np.zeros((0, 4), int))
+    )
+    params = dict(
+        radius=float(radius), draft=float(draft), bottom=bool(bottom), panel_size=float(panel_size)
+    )
     return HullMesh(v, f, lv, lf, "vertical_cylinder", float(panel_size), params)
 
 

@@ -104,12 +104,15 @@ def near_field_drift(*, omega, rho, g, panels, waterline, mass, inertia, cog, mo
 
     xs = np.concatenate([wp[:, 0], c[:, 0]]) - cog[0]
     dF = np.concatenate([dF1, dF2 + dF3], axis=-2)
-    sectional = np.stack([np.sum(xs[:, None] ** j * dF, axis=-2) for j in range(3)], axis=-1)  # (..., 2, 3)
+    sectional = np.stack(
+        [np.sum(xs[:, None] ** j * dF, axis=-2) for j in range(3)], axis=-1
+    )  # (..., 2, 3)
     return dict(force=parts.sum(axis=-2), parts=parts, sectional=sectional)
 
 
-def surface_gradient_operator(vertices, faces, centres, normals, wl_points=None, wl_owner=None, *,
-                              coplanar: float = 0.9):
+def surface_gradient_operator(
+    vertices, faces, centres, normals, wl_points=None, wl_owner=None, *, coplanar: float = 0.9
+):
     """Sparse operator for the tangential gradient of a function known at the panel centres
     (and optionally at waterline points), by a local least-squares quadratic fit.
 
@@ -156,7 +159,9 @@ def surface_gradient_operator(vertices, faces, centres, normals, wl_points=None,
         if len(data) < 5 or np.linalg.matrix_rank(A, tol=1e-6) < 5:
             A = A[:, :2]
         if len(data) < 2 or np.linalg.matrix_rank(A, tol=1e-6) < 2:
-            raise ValueError(f"panel {i} has too few neighbours on its face for a surface gradient; refine the mesh")
+            raise ValueError(
+                f"panel {i} has too few neighbours on its face for a surface gradient; refine the mesh"
+            )
         P = np.linalg.pinv(A)[:2] / h  # (2, k): rows give a, b
         rows.append(data)
         wts.append(P[0][:, None] * e1 + P[1][:, None] * e2)

@@ -28,7 +28,7 @@ import math
 
 import numpy as np
 
-from ..units import G, RHO_SEA
+from .._units import RHO_SEA, G
 
 
 def wavenumber(omega, depth, g: float = G) -> float:
@@ -99,4 +99,7 @@ def cylinder_drift(radius, depth, omega, *, rho: float = RHO_SEA, g: float = G) 
     e = 0.0 if not math.isfinite(depth) else math.exp(-2 * k * depth)
     h_sech2 = 0.0 if not math.isfinite(depth) else depth * 4 * e / (1 + e) ** 2  # h / cosh² kh
     I_C, I_S = 0.5 * h_sech2 + th / (2 * k), th / (2 * k) - 0.5 * h_sech2
-    return float(-0.25 * rho * g * radius * ic + 0.25 * rho * (g / omega) ** 2 * radius * (I_C / radius**2 * ip + k**2 * I_S * ic))
+    return float(
+        -0.25 * rho * g * radius * ic
+        + 0.25 * rho * (g / omega) ** 2 * radius * (I_C / radius**2 * ip + k**2 * I_S * ic)
+    )

@@ -1,7 +1,9 @@
+# pyright: reportAttributeAccessIssue=false, reportOptionalMemberAccess=false, reportCallIssue=false
+# (Capytaine is untyped and builds its meshes and results dynamically)
 """First-order panel solution with Capytaine, RAOs, and far- and near-field mean drift.
 
 The pipeline for one hull (`bem_drift`), one frequency at a time so that memory stays at one
-frequency's matrices (shared/notes/capytaine.md: about 10 GB per frequency at 0.5 m panels):
+frequency's matrices (docs/bem.md: about 10 GB per frequency at 0.5 m panels):
 
 1. radiation (6 DOF, unit displacement) and diffraction problems (every heading), solved
    with the indirect (source) method, sources kept;
@@ -32,12 +34,14 @@ from pathlib import Path
 import numpy as np
 
 from .. import presets
-from ..units import G, RHO_SEA
+from .._units import RHO_SEA, G
 from .meshes import HullMesh
 from .nearfield import apply_gradient, near_field_drift, surface_gradient_operator
 
-INSTALL_HINT = ("jaxtow.bem needs the optional panel-method extra (Capytaine): "
-                "pip install 'jaxtow[bem]'  (or: pip install capytaine)")
+INSTALL_HINT = (
+    "jaxtow.bem needs the optional panel-method extra (Capytaine): "
+    "pip install 'jaxtow[bem]'  (or: pip install capytaine)"
+)
 DOFS = ("Surge", "Sway", "Heave", "Roll", "Pitch", "Yaw")
 #: fewer panels per wavelength than this flags a frequency as unresolved (``resolved`` in the dataset)
 MIN_PANELS_PER_WAVELENGTH = 6.0
@@ -77,8 +81,15 @@ class RigidBody:
         return M
 
 
-def rigid_body(mesh: HullMesh, cog_z: float | None = None, *, radii=None, roll_damping: float | None = None,
-               rho: float = RHO_SEA, g: float = G) -> RigidBody:
+def rigid_body(
+    mesh: HullMesh,
+    cog_z: float | None = None,
+    *,
+    radii=None,
+    roll_damping: float | None = None,
+    rho: float = RHO_SEA,
+    g: float = G,
+) -> RigidBody:
     """Free-floating rigid body for ``mesh``: mass ρ∇, CoG above the centre of buoyancy at
     height ``cog_z`` above the keel (thesis Table B.3: 10 m; default
     `presets.ASSUMPTIONS['cog_z']`), radii of gyration ``radii`` = (k_xx, k_yy, k_zz) [m]
@@ -87,16 +98,22 @@ def rigid_body(mesh: HullMesh, cog_z: float | None = None, *, radii=None, roll_d
     critical (default `presets.ASSUMPTIONS['roll_damping']`; it is finalised per frequency
     with the roll added mass, see `_roll_damping`)."""
     if cog_z is None:
-        cog_z = presets.ASSUMPTIONS["cog_z"]["value"]
+        cog_z = float(presets.ASSUMPTIONS["cog_z"]["value"])
     if roll_damping is None:
-        roll_damping = presets.ASSUMPTIONS["roll_damping"]["value"]
+        roll_damping = float(presets.ASSUMPTIONS["roll_damping"]["value"])
     if not (math.isfinite(cog_z) and cog_z >= 0):
-        raise ValueError(f"parameter 'cog_z' (height of the CoG above the keel) must be >= 0, got {cog_z!r}")
+        raise ValueError(
+            f"parameter 'cog_z' (height of the CoG above the keel) must be >= 0, got {cog_z!r}"
+        )
     if not (math.isfinite(roll_damping) and 0 <= roll_damping < 1):
-        raise ValueError(f"parameter 'roll_damping' (fraction of critical) must lie in [0, 1), got {roll_damping!r}")
+        raise ValueError(
+            f"parameter 'roll_damping' (fraction of critical) must lie in [0, 1), got {roll_damping!r}"
+        )
     V = mesh.volume
     if not V > 0:
-        raise ValueError(f"mesh {mesh.name!r} has a non-positive displaced volume ({V}); check its normals")
+        raise ValueError(
+            f"mesh {mesh.name!r} has a non-positive displaced volume ({V}); check its normals"
+        )
     keel = float(mesh.vertices[:, 2].min())
     xb = mesh.centre_of_buoyancy()
     cog = np.array([xb[0], xb[1], keel + float(cog_z)])
@@ -127,7 +144,9 @@ def rigid_body(mesh: HullMesh, cog_z: float | None = None, *, radii=None, roll_d
     C[4, 4] = rg * (Ixx + V * (xb[2] - cog[2]))
     C[3, 4] = C[4, 3] = -rg * Ixy
     if C[3, 3] <= 0:
-        raise ValueError(f"the hull is unstable in roll: GM_T = {C[3, 3] / (rg * V):.3f} m <= 0 with cog_z = {cog_z} m")
+        raise ValueError(
+            f"the hull is unstable in roll: GM_T = {C[3, 3] / (rg * V):.3f} m <= 0 with cog_z = {cog_z} m"
+        )
     D = np.zeros((6, 6))
     D[3, 3] = roll_damping  # fraction of critical; converted per frequency
     notes["roll_damping"] = f"{roll_damping} of critical (linearised viscous roll damping)"
@@ -136,13 +155,19 @@ def rigid_body(mesh: HullMesh, cog_z: float | None = None, *, radii=None, roll_d
 
 def _fixed_body() -> RigidBody:
     """Placeholder body for a fixed (diffraction-only) computation: no mass, no stiffness."""
-    return RigidBody(0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True})
+    return RigidBody(
+        0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True}
+    )
 
 
 def _roll_damping(body: RigidBody, a44: float) -> np.ndarray:
     """Dimensional viscous damping: B44 = 2 ζ sqrt(C44 (I44 + A44(ω)))."""
     D = np.zeros((6, 6))
-    D[3, 3] = 2 * body.damping[3, 3] * math.sqrt(body.stiffness[3, 3] * (body.inertia[0, 0] + max(a44, 0.0)))
+    D[3, 3] = (
+        2
+        * body.damping[3, 3]
+        * math.sqrt(body.stiffness[3, 3] * (body.inertia[0, 0] + max(a44, 0.0)))
+    )
     return D
 
 
@@ -150,12 +175,17 @@ def to_capytaine_mesh(mesh: HullMesh):
     """(hull, lid) as Capytaine meshes (lid None when the mesh has none)."""
     cpt = require_capytaine()
     hull = cpt.Mesh(vertices=mesh.vertices, faces=mesh.faces, name=mesh.name)
-    lid = (cpt.Mesh(vertices=mesh.lid_vertices, faces=mesh.lid_faces, name=mesh.name + "_lid")
-           if len(mesh.lid_faces) else None)
+    lid = (
+        cpt.Mesh(vertices=mesh.lid_vertices, faces=mesh.lid_faces, name=mesh.name + "_lid")
+        if len(mesh.lid_faces)
+        else None
+    )
     return hull, lid
 
 
-def read_mesh(path, *, panel_size: float | None = None, lid: bool = True, name: str | None = None) -> HullMesh:
+def read_mesh(
+    path, *, panel_size: float | None = None, lid: bool = True, name: str | None = None
+) -> HullMesh:
     """Read a user hull in any format Capytaine reads (GDF, MAR, NEMOH, STL, PNL, ...), keep
     its immersed part (z <= 0) and add a lid on the waterplane (Capytaine's
     ``generate_lid``). Normals must point into the water."""
@@ -173,13 +203,17 @@ def read_mesh(path, *, panel_size: float | None = None, lid: bool = True, name: 
         lv, lf = np.asarray(lm.vertices, float), np.asarray(lm.faces, int)
         if lf.size and lf.shape[1] == 3:
             lf = np.concatenate([lf, lf[:, 2:3]], axis=1)
-    ps = float(np.sqrt(np.median(HullMesh(v, f, lv, lf, "x", 0.0).areas))) if panel_size is None else panel_size
+    ps = (
+        float(np.sqrt(np.median(HullMesh(v, f, lv, lf, "x", 0.0).areas)))
+        if panel_size is None
+        else panel_size
+    )
     return HullMesh(v, f, lv, lf, name or Path(path).stem, ps, dict(path=str(path)))
 
 
 def _theta_grid(step_deg: float = 0.5):
     """Kochin angles: 0…2π in ``step_deg`` steps, padded by 2 steps on each side (the far-field
-    routine needs every heading strictly inside; shared/notes/capytaine.md)."""
+    routine needs every heading strictly inside; docs/bem.md)."""
     n = int(round(360 / step_deg))
     return np.radians(np.arange(-2, n + 3) * step_deg)
 
@@ -187,17 +221,49 @@ def _theta_grid(step_deg: float = 0.5):
 def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
     cpt = require_capytaine()
     h = hashlib.sha256()
-    for arr in (mesh.vertices, mesh.faces, mesh.lid_vertices, mesh.lid_faces, body.cog, body.inertia,
-                body.stiffness, body.damping, np.asarray(beta, float)):
+    for arr in (
+        mesh.vertices,
+        mesh.faces,
+        mesh.lid_vertices,
+        mesh.lid_faces,
+        body.cog,
+        body.inertia,
+        body.stiffness,
+        body.damping,
+        np.asarray(beta, float),
+    ):
         h.update(np.ascontiguousarray(arr).tobytes())
-    h.update(json.dumps([float(body.mass), float(omega), rho, g, str(depth), theta_step, bool(fixed), cpt.__version__,
-                         _CACHE_VERSION]).encode())
+    h.update(
+        json.dumps(
+            [
+                float(body.mass),
+                float(omega),
+                rho,
+                g,
+                str(depth),
+                theta_step,
+                bool(fixed),
+                cpt.__version__,
+                _CACHE_VERSION,
+            ]
+        ).encode()
+    )
     return h.hexdigest()[:20]
 
 
-def solve_frequency(mesh: HullMesh, body: RigidBody | None, omega: float, beta, *, rho: float = RHO_SEA, g: float = G,
-                    water_depth: float = math.inf, theta_step: float = 0.5, fixed: bool = False,
-                    solver=None) -> dict:
+def solve_frequency(
+    mesh: HullMesh,
+    body: RigidBody | None,
+    omega: float,
+    beta,
+    *,
+    rho: float = RHO_SEA,
+    g: float = G,
+    water_depth: float = math.inf,
+    theta_step: float = 0.5,
+    fixed: bool = False,
+    solver=None,
+) -> dict:
     """Everything at one frequency (see the module docstring); plain NumPy arrays.
     ``fixed=True`` holds the body still (RAOs zero: diffraction only)."""
     cpt = require_capytaine()
@@ -211,23 +277,35 @@ def solve_frequency(mesh: HullMesh, body: RigidBody | None, omega: float, beta, 
         body = _fixed_body()
     hull, lid = to_capytaine_mesh(mesh)
     mass_kw = dict(center_of_mass=body.cog, mass=body.mass) if body.mass > 0 else {}
-    cbody = cpt.FloatingBody(mesh=hull, lid_mesh=lid, dofs=cpt.rigid_body_dofs(rotation_center=body.cog),
-                             name=mesh.name, **mass_kw)
+    cbody = cpt.FloatingBody(
+        mesh=hull,
+        lid_mesh=lid,
+        dofs=cpt.rigid_body_dofs(rotation_center=body.cog),
+        name=mesh.name,
+        **mass_kw,
+    )
     solver = solver or cpt.BEMSolver(method="indirect")
     env = dict(omega=float(omega), rho=rho, g=g, water_depth=water_depth)
     rad = [cpt.RadiationProblem(body=cbody, radiating_dof=d, **env) for d in DOFS]
-    dif = [cpt.DiffractionProblem(body=cbody, wave_direction=float(b + math.pi), **env) for b in beta]
-    results = solver.solve_all(rad + dif, keep_details=True, progress_bar=False, _check_wavelength=False)
+    dif = [
+        cpt.DiffractionProblem(body=cbody, wave_direction=float(b + math.pi), **env) for b in beta
+    ]
+    results = solver.solve_all(
+        rad + dif, keep_details=True, progress_bar=False, _check_wavelength=False
+    )
     rres, dres = results[:6], results[6:]
 
-    A = np.array([[r.added_mass[d] for d in DOFS] for r in rres]).T  # A[i, j]: force i from motion j
+    A = np.array(
+        [[r.added_mass[d] for d in DOFS] for r in rres]
+    ).T  # A[i, j]: force i from motion j
     Bd = np.array([[r.radiation_damping[d] for d in DOFS] for r in rres]).T
     from capytaine.bem.airy_waves import froude_krylov_force
+
     fk = np.array([[froude_krylov_force(r.problem)[d] for d in DOFS] for r in dres])
     fd = np.array([[r.forces[d] for d in DOFS] for r in dres])
     exc = fk + fd  # (nb, 6)
     Bv = np.zeros((6, 6)) if fixed else _roll_damping(body, A[3, 3])
-    H = -omega**2 * (body.mass_matrix() + A) - 1j * omega * (Bd + Bv) + body.stiffness
+    H = -(omega**2) * (body.mass_matrix() + A) - 1j * omega * (Bd + Bv) + body.stiffness
     rao = np.zeros_like(exc) if fixed else np.linalg.solve(H, exc.T).T  # (nb, 6)
 
     # far field (Kochin functions)
@@ -236,12 +314,24 @@ def solve_frequency(mesh: HullMesh, body: RigidBody | None, omega: float, beta, 
     ds.update(kochin_data_array(results, theta))
     import xarray as xr
 
-    X = xr.DataArray(rao[None], dims=("omega", "wave_direction", "radiating_dof"),
-                     coords={"omega": [float(omega)], "wave_direction": beta + math.pi, "radiating_dof": list(DOFS)})
+    X = xr.DataArray(
+        rao[None],
+        dims=("omega", "wave_direction", "radiating_dof"),
+        coords={
+            "omega": [float(omega)],
+            "wave_direction": beta + math.pi,
+            "radiating_dof": list(DOFS),
+        },
+    )
     X = X.transpose("omega", "wave_direction", "radiating_dof")
     drift = cpt.post_pro.mean_drift_force.far_field_mean_drift_force(X, ds)
-    ff = np.stack([np.real(np.diagonal(np.asarray(drift[f"drift_force_{c}"].transpose("omega", ...))[0]))
-                   for c in ("surge", "sway", "yaw")], axis=-1)
+    ff = np.stack(
+        [
+            np.real(np.diagonal(np.asarray(drift[f"drift_force_{c}"].transpose("omega", ...))[0]))
+            for c in ("surge", "sway", "yaw")
+        ],
+        axis=-1,
+    )
     ff[:, 2] -= body.cog[0] * ff[:, 1] - body.cog[1] * ff[:, 0]  # yaw about the CoG's vertical axis
 
     # near field: total velocity on the hull panels, total potential on the waterline
@@ -250,7 +340,9 @@ def solve_frequency(mesh: HullMesh, body: RigidBody | None, omega: float, beta, 
     hull_mesh = cbody.mesh
     n_hull = hull_mesh.nb_faces
     full = cbody.mesh_including_lid
-    if not np.allclose(np.asarray(full.faces_centers)[:n_hull], np.asarray(hull_mesh.faces_centers)):
+    if not np.allclose(
+        np.asarray(full.faces_centers)[:n_hull], np.asarray(hull_mesh.faces_centers)
+    ):
         raise RuntimeError("Capytaine reordered the hull panels inside the hull+lid mesh")
     src = np.stack([r.sources for r in results], axis=-1)  # (n_all, 6 + nb)
     p0, p1, owner = mesh.waterline()
@@ -264,19 +356,48 @@ def solve_frequency(mesh: HullMesh, body: RigidBody | None, omega: float, beta, 
     for ib, r in enumerate(dres):
         phi[ib] = pot[:, 6 + ib] + airy_waves_potential(pts, r.problem) + pot[:, :6] @ rao[ib]
     # tangential velocity from the surface potential; normal velocity = the hull's (the body condition)
-    u_n = -1j * omega * np.sum((rao[:, None, :3] + np.cross(rao[:, None, 3:], centres - body.cog)) * nrm, axis=-1)
+    u_n = (
+        -1j
+        * omega
+        * np.sum((rao[:, None, :3] + np.cross(rao[:, None, 3:], centres - body.cog)) * nrm, axis=-1)
+    )
     u_tot = np.moveaxis(apply_gradient(index, weights, phi.T), 1, 0) + u_n[..., None] * nrm
     phi_tot = phi[:, n_hull:]
     nf = near_field_drift(
-        omega=omega, rho=rho, g=g,
-        panels=dict(centres=centres, normals=np.asarray(hull_mesh.faces_normals), areas=np.asarray(hull_mesh.faces_areas),
-                    velocity=u_tot),
-        waterline=dict(points=wpts, normals=mesh.normals[owner], lengths=np.linalg.norm(p1 - p0, axis=1),
-                       potential=phi_tot),
-        mass=body.mass, inertia=body.inertia, cog=body.cog, motion=rao)
-    return dict(omega=float(omega), beta=beta, added_mass=A, damping=Bd, viscous_damping=Bv, excitation=exc, rao=rao,
-                far_field=ff, near_field=nf["force"], near_field_parts=nf["parts"], sectional=nf["sectional"],
-                wavenumber=k)
+        omega=omega,
+        rho=rho,
+        g=g,
+        panels=dict(
+            centres=centres,
+            normals=np.asarray(hull_mesh.faces_normals),
+            areas=np.asarray(hull_mesh.faces_areas),
+            velocity=u_tot,
+        ),
+        waterline=dict(
+            points=wpts,
+            normals=mesh.normals[owner],
+            lengths=np.linalg.norm(p1 - p0, axis=1),
+            potential=phi_tot,
+        ),
+        mass=body.mass,
+        inertia=body.inertia,
+        cog=body.cog,
+        motion=rao,
+    )
+    return dict(
+        omega=float(omega),
+        beta=beta,
+        added_mass=A,
+        damping=Bd,
+        viscous_damping=Bv,
+        excitation=exc,
+        rao=rao,
+        far_field=ff,
+        near_field=nf["force"],
+        near_field_parts=nf["parts"],
+        sectional=nf["sectional"],
+        wavenumber=k,
+    )
 
 
 _PARTS = ("I", "II", "III", "IV")
@@ -291,8 +412,10 @@ def _frequency_dataset(r: dict):
     rao, exc = r["rao"][None], r["excitation"][None]
     ds = xr.Dataset(
         {
-            "rao_real": (dims_b + ("dof",), rao.real), "rao_imag": (dims_b + ("dof",), rao.imag),
-            "excitation_real": (dims_b + ("dof",), exc.real), "excitation_imag": (dims_b + ("dof",), exc.imag),
+            "rao_real": (dims_b + ("dof",), rao.real),
+            "rao_imag": (dims_b + ("dof",), rao.imag),
+            "excitation_real": (dims_b + ("dof",), exc.real),
+            "excitation_imag": (dims_b + ("dof",), exc.imag),
             "added_mass": (("omega", "dof", "dof_j"), r["added_mass"][None]),
             "radiation_damping": (("omega", "dof", "dof_j"), r["damping"][None]),
             "viscous_damping": (("omega", "dof", "dof_j"), r["viscous_damping"][None]),
@@ -302,8 +425,16 @@ def _frequency_dataset(r: dict):
             "sectional_moments": (dims_b + ("axis", "order"), r["sectional"][None]),
             "wavenumber": (("omega",), [r["wavenumber"]]),
         },
-        coords={"omega": w, "beta": r["beta"], "dof": list(DOFS), "dof_j": list(DOFS), "component": list(_COMPONENTS),
-                "part": list(_PARTS), "axis": ["x", "y"], "order": [0, 1, 2]},
+        coords={
+            "omega": w,
+            "beta": r["beta"],
+            "dof": list(DOFS),
+            "dof_j": list(DOFS),
+            "component": list(_COMPONENTS),
+            "part": list(_PARTS),
+            "axis": ["x", "y"],
+            "order": [0, 1, 2],
+        },
     )
     return ds
 
@@ -313,29 +444,55 @@ def _attrs(mesh, body, rho, g, water_depth, fixed, theta_step):
     import jaxtow
 
     return {
-        "mesh_name": mesh.name, "mesh_params": json.dumps(mesh.params), "n_panels": mesh.n_panels,
-        "n_lid_panels": int(len(mesh.lid_faces)), "panel_size_m": mesh.panel_size,
+        "mesh_name": mesh.name,
+        "mesh_params": json.dumps(mesh.params),
+        "n_panels": mesh.n_panels,
+        "n_lid_panels": int(len(mesh.lid_faces)),
+        "panel_size_m": mesh.panel_size,
         "solver": "capytaine.BEMSolver(method='indirect'), Delhommeau Green function, lid for irregular frequencies",
-        "capytaine_version": cpt.__version__, "jaxtow_version": jaxtow.__version__,
-        "rho": rho, "g": g, "water_depth": str(water_depth), "fixed_body": int(fixed),
-        "mass_kg": float(body.mass), "cog_m": json.dumps([float(c) for c in body.cog]),
+        "capytaine_version": cpt.__version__,
+        "jaxtow_version": jaxtow.__version__,
+        "rho": rho,
+        "g": g,
+        "water_depth": str(water_depth),
+        "fixed_body": int(fixed),
+        "mass_kg": float(body.mass),
+        "cog_m": json.dumps([float(c) for c in body.cog]),
         "inertia_kgm2": json.dumps([float(v) for v in np.diag(body.inertia)]),
-        "body_notes": json.dumps(body.notes), "kochin_step_deg": theta_step,
+        "body_notes": json.dumps(body.notes),
+        "kochin_step_deg": theta_step,
         "far_field_method": "capytaine.post_pro.far_field_mean_drift_force (Kochin functions)",
         "near_field_method": "Pinkster pressure integration, parts I-IV (jaxtow.bem.nearfield); surface velocity "
-                             "from a least-squares gradient of the surface potential",
+        "from a least-squares gradient of the surface potential",
         "conventions": "per unit wave amplitude squared, SI; body axes x forward, y port, z up from the waterline; "
-                       "beta = 0 head seas, CCW, direction waves come from; yaw about the CoG's vertical axis; "
-                       "complex amplitudes with exp(-i omega t)",
-        "assumptions": json.dumps({k: presets.ASSUMPTIONS[k]["note"] for k in ("cog_z", "radii_of_gyration",
-                                                                                   "roll_damping")}),
+        "beta = 0 head seas, CCW, direction waves come from; yaw about the CoG's vertical axis; "
+        "complex amplitudes with exp(-i omega t)",
+        "assumptions": json.dumps(
+            {
+                k: presets.ASSUMPTIONS[k]["note"]
+                for k in ("cog_z", "radii_of_gyration", "roll_damping")
+            }
+        ),
     }
 
 
-def bem_drift(mesh: HullMesh, omega, beta, *, body: RigidBody | None = None, cog_z: float | None = None,
-              radii=None, roll_damping: float | None = None, rho: float = RHO_SEA, g: float = G,
-              water_depth: float = math.inf, fixed: bool = False, cache_dir=None, progress: bool = False,
-              theta_step: float = 0.5):
+def bem_drift(
+    mesh: HullMesh,
+    omega,
+    beta,
+    *,
+    body: RigidBody | None = None,
+    cog_z: float | None = None,
+    radii=None,
+    roll_damping: float | None = None,
+    rho: float = RHO_SEA,
+    g: float = G,
+    water_depth: float = math.inf,
+    fixed: bool = False,
+    cache_dir=None,
+    progress: bool = False,
+    theta_step: float = 0.5,
+):
     """First-order solution, RAOs and far-/near-field mean drift over (ω, β) for ``mesh``,
     one frequency at a time, as an xarray Dataset (variables in `_frequency_dataset`, the
     mesh, solver, versions and assumptions in its attributes).
@@ -371,21 +528,38 @@ def bem_drift(mesh: HullMesh, omega, beta, *, body: RigidBody | None = None, cog
         if path is not None and path.exists():
             ds = xr.load_dataset(path)
         else:
-            r = solve_frequency(mesh, body, w, beta, rho=rho, g=g, water_depth=water_depth, fixed=fixed,
-                                theta_step=theta_step)
+            r = solve_frequency(
+                mesh,
+                body,
+                w,
+                beta,
+                rho=rho,
+                g=g,
+                water_depth=water_depth,
+                fixed=fixed,
+                theta_step=theta_step,
+            )
             ds = _frequency_dataset(r)
             if path is not None:
                 ds.to_netcdf(path)
         parts.append(ds)
         bar.update()
-    out = xr.concat(parts, dim="omega", data_vars="minimal", coords="minimal", compat="override",
-                    join="override")
+    out = xr.concat(
+        parts,
+        dim="omega",
+        data_vars="minimal",
+        coords="minimal",
+        compat="override",
+        join="override",
+    )
     out.attrs.update(_attrs(mesh, body, rho, g, water_depth, fixed, theta_step))
     # validity: waves must be resolved by the panels (about 6 or more panels per wavelength)
     out["panels_per_wavelength"] = 2 * math.pi / out["wavenumber"] / mesh.panel_size
     out["resolved"] = out["panels_per_wavelength"] >= MIN_PANELS_PER_WAVELENGTH
-    out["resolved"].attrs["note"] = (f"wavelength / nominal panel size >= {MIN_PANELS_PER_WAVELENGTH}; "
-                                     "results at unresolved frequencies are unreliable")
+    out["resolved"].attrs["note"] = (
+        f"wavelength / nominal panel size >= {MIN_PANELS_PER_WAVELENGTH}; "
+        "results at unresolved frequencies are unreliable"
+    )
     return out
 
 
@@ -399,7 +573,7 @@ def qtf_from_bem(ds, method: str = "far_field", *, symmetric: bool = False):
     'near_field'. ``symmetric=True`` (a port-starboard symmetric hull with β from 0) completes
     the table to negative headings with `QTF.symmetric`, setting the head-sea (and
     following-sea) sway and yaw, which vanish by symmetry, to exactly zero."""
-    from ..drift.qtf import QTF
+    from ..drift._qtf import QTF
 
     if method not in ("far_field", "near_field"):
         raise ValueError(f"parameter 'method' must be 'far_field' or 'near_field', got {method!r}")
@@ -422,7 +596,9 @@ def qtf_attrs(ds, method: str) -> dict:
     return keep
 
 
-def mesh_convergence(build_mesh, panel_sizes, omega, beta, *, length: float | None = None, **kwargs):
+def mesh_convergence(
+    build_mesh, panel_sizes, omega, beta, *, length: float | None = None, **kwargs
+):
     """Mesh-convergence study (thesis appendix B.1): `bem_drift` for each panel size
     (``build_mesh(panel_size) -> HullMesh``), and the relative MSE (eq. 3.8 as in
     `jaxtow.drift.compare`) of each mesh's far- and near-field surge and sway against the finest
@@ -433,8 +609,8 @@ def mesh_convergence(build_mesh, panel_sizes, omega, beta, *, length: float | No
     import jax.numpy as jnp
     import xarray as xr
 
-    from ..drift.methods import ZONE_NAMES, zone
-    from ..drift.compare import relative_mse
+    from ..drift._compare import relative_mse
+    from ..drift._methods import ZONE_NAMES, zone
 
     sizes = sorted((float(p) for p in panel_sizes), reverse=True)
     runs = {p: bem_drift(build_mesh(p), omega, beta, **kwargs) for p in sizes}
@@ -444,10 +620,15 @@ def mesh_convergence(build_mesh, panel_sizes, omega, beta, *, length: float | No
     B = float(np.ptp(first.vertices[:, 1]))
     zones = np.asarray(zone(jnp.asarray(np.asarray(finest.omega, float)), L))
     names = list(ZONE_NAMES) + ["all"]
+
     def by_zone(est, base):
         out = np.full(len(names), np.nan)
         for z, name in enumerate(names):
-            mask = np.ones_like(base, bool) if name == "all" else (zones == z)[:, None] & np.ones_like(base, bool)
+            mask = (
+                np.ones_like(base, bool)
+                if name == "all"
+                else (zones == z)[:, None] & np.ones_like(base, bool)
+            )
             if mask.any() and np.any(base[mask] != 0):
                 out[z] = relative_mse(est, base, mask)
         return out
@@ -455,35 +636,80 @@ def mesh_convergence(build_mesh, panel_sizes, omega, beta, *, length: float | No
     def comp(ds, method, c):
         return np.asarray(ds[method].isel(component=c).transpose("omega", "beta"))
 
-    mse = np.array([[[by_zone(comp(runs[p], m, c), comp(finest, "far_field", c)) for c in range(2)]
-                     for m in ("far_field", "near_field")] for p in sizes])
-    agree = np.array([[by_zone(comp(runs[p], "near_field", c), comp(runs[p], "far_field", c)) for c in range(2)]
-                      for p in sizes])
+    mse = np.array(
+        [
+            [
+                [by_zone(comp(runs[p], m, c), comp(finest, "far_field", c)) for c in range(2)]
+                for m in ("far_field", "near_field")
+            ]
+            for p in sizes
+        ]
+    )
+    agree = np.array(
+        [
+            [
+                by_zone(comp(runs[p], "near_field", c), comp(runs[p], "far_field", c))
+                for c in range(2)
+            ]
+            for p in sizes
+        ]
+    )
     summary = xr.Dataset(
-        {"mse": (("panel_size", "drift_method", "component", "zone"), mse),
-         "near_vs_far": (("panel_size", "component", "zone"), agree),
-         "panels_per_length": (("panel_size",), [L / p for p in sizes]),
-         "panels_per_breadth": (("panel_size",), [B / p for p in sizes]),
-         "n_panels": (("panel_size",), [int(runs[p].attrs["n_panels"]) for p in sizes])},
-        coords={"panel_size": sizes, "drift_method": ["far_field", "near_field"], "component": ["fx", "fy"], "zone": names},
-        attrs={"base": f"far field of the finest mesh ({sizes[-1]} m)", "length_m": L, "breadth_m": B},
+        {
+            "mse": (("panel_size", "drift_method", "component", "zone"), mse),
+            "near_vs_far": (("panel_size", "component", "zone"), agree),
+            "panels_per_length": (("panel_size",), [L / p for p in sizes]),
+            "panels_per_breadth": (("panel_size",), [B / p for p in sizes]),
+            "n_panels": (("panel_size",), [int(runs[p].attrs["n_panels"]) for p in sizes]),
+        },
+        coords={
+            "panel_size": sizes,
+            "drift_method": ["far_field", "near_field"],
+            "component": ["fx", "fy"],
+            "zone": names,
+        },
+        attrs={
+            "base": f"far field of the finest mesh ({sizes[-1]} m)",
+            "length_m": L,
+            "breadth_m": B,
+        },
     )
     return runs, summary
 
 
-def box_barge_drift(length: float, breadth: float, draft: float, cog_z: float, omega, beta, *,
-                    panel_size: float = 2.0, rake: float = 0.0, **kwargs):
+def box_barge_drift(
+    length: float,
+    breadth: float,
+    draft: float,
+    cog_z: float,
+    omega,
+    beta,
+    *,
+    panel_size: float = 2.0,
+    rake: float = 0.0,
+    **kwargs,
+):
     """Panel-method mean drift of a (raked) box barge: `BEMDrift` with ``far_field`` and
     ``near_field`` jaxtow `QTF` (SI per ζa², β = 0 head seas; completed by symmetry when β
     starts at 0) and the full ``dataset``. ``cog_z`` is the CoG height above the keel [m];
     other keywords go to `bem_drift` (cache_dir, progress, radii, roll_damping, ...)."""
     from .meshes import raked_barge_mesh
 
-    mesh = raked_barge_mesh(length, breadth, draft, rake, panel_size=panel_size,
-                            name="box_barge" if rake == 0 else "raked_barge")
+    mesh = raked_barge_mesh(
+        length,
+        breadth,
+        draft,
+        rake,
+        panel_size=panel_size,
+        name="box_barge" if rake == 0 else "raked_barge",
+    )
     ds = bem_drift(mesh, omega, beta, cog_z=cog_z, **kwargs)
     sym = bool(np.isclose(float(np.min(ds.beta)), 0.0))
-    return BEMDrift(qtf_from_bem(ds, "far_field", symmetric=sym), qtf_from_bem(ds, "near_field", symmetric=sym), ds)
+    return BEMDrift(
+        qtf_from_bem(ds, "far_field", symmetric=sym),
+        qtf_from_bem(ds, "near_field", symmetric=sym),
+        ds,
+    )
 
 
 @dataclasses.dataclass(frozen=True)

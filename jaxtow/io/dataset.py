@@ -8,8 +8,8 @@ import json
 import numpy as np
 import xarray as xr
 
-from ..parameters import describe
-from ..vessel import VESSEL_PARAMETERS
+from .._parameters import describe
+from .._vessel import VESSEL_PARAMETERS
 
 #: name → (units, long_name) of the sweep outputs.
 VARIABLES = {
@@ -33,16 +33,28 @@ VARIABLES = {
     "n_equilibria": ("1", "number of equilibria found"),
     "truncated": ("1", "more equilibria exist than slots (raise max_roots)"),
 }
-_FLOAT_MASKED = ("psi", "gamma", "tension", "length", "residual", "eig_real", "eig_imag", "max_real")
+_FLOAT_MASKED = (
+    "psi",
+    "gamma",
+    "tension",
+    "length",
+    "residual",
+    "eig_real",
+    "eig_imag",
+    "max_real",
+)
 
 
 def model_attributes(model) -> dict:
     """Provenance attributes: every fixed parameter value and the documented estimates."""
     from .. import __version__
 
-    attrs = {"jaxtow_version": __version__, "vessel": model.vessel.name,
-             "towline_law": type(model.towline).__name__,
-             "external_force": type(model.external).__name__}
+    attrs = {
+        "jaxtow_version": __version__,
+        "vessel": model.vessel.name,
+        "towline_law": type(model.towline).__name__,
+        "external_force": type(model.external).__name__,
+    }
     for n in VESSEL_PARAMETERS:
         attrs[f"vessel_{n}"] = float(np.asarray(getattr(model.vessel, n)))
     for f in dataclasses.fields(model.towline):
@@ -50,15 +62,22 @@ def model_attributes(model) -> dict:
     attrs["psi_max"] = float(np.asarray(model.psi_max))
     attrs["assumed_values"] = json.dumps(dict(model.assumed)) if model.assumed else "none"
     if model.assumed:
-        attrs["note"] = ("Results depend on documented estimates for values the source lacks: "
-                         + ", ".join(k for k, _ in model.assumed) + " (see jaxtow.presets).")
+        attrs["note"] = (
+            "Results depend on documented estimates for values the source lacks: "
+            + ", ".join(k for k, _ in model.assumed)
+            + " (see jaxtow.presets)."
+        )
     return attrs
 
 
 def sweep_dataset(model, arrays: dict, *, method: str) -> xr.Dataset:
     coords = arrays["_coords"]
     names = list(coords)
-    ds = xr.Dataset(coords={n: (n, v, dict(zip(("units", "long_name"), describe(n)))) for n, v in coords.items()})
+    ds = xr.Dataset(
+        coords={
+            n: (n, v, dict(zip(("units", "long_name"), describe(n)))) for n, v in coords.items()
+        }
+    )
     nslot = arrays["psi"].shape[len(names)]
     ds = ds.assign_coords(equilibrium=np.arange(nslot), mode=np.arange(6))
     found = arrays["found"]

@@ -5,10 +5,12 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from ..resistance import COMPONENTS, Budget
+from ..resistance._budget import COMPONENTS, Budget
 
 
-def resistance_dataset(budget: Budget, speeds, tps, *, tow=None, sea=None, attrs: dict | None = None) -> xr.Dataset:
+def resistance_dataset(
+    budget: Budget, speeds, tps, *, tow=None, sea=None, attrs: dict | None = None
+) -> xr.Dataset:
     """Dataset over (speed, tp, component) from a `jaxtow.resistance.resistance_grid` budget:
     ``resistance`` [N] per component along the course, ``total`` [N], ``share`` [%],
     ``froude`` and the body-axis loads ``fx``, ``fy`` [N], ``nz`` [N m]. The tow's
@@ -21,9 +23,17 @@ def resistance_dataset(budget: Budget, speeds, tps, *, tow=None, sea=None, attrs
     data = {
         "resistance": (dims, r, {"units": "N", "long_name": "resistance along the course"}),
         "total": (dims[:2], total, {"units": "N", "long_name": "total tow resistance"}),
-        "share": (dims, np.asarray(budget.shares), {"units": "%", "long_name": "share of the total"}),
+        "share": (
+            dims,
+            np.asarray(budget.shares),
+            {"units": "%", "long_name": "share of the total"},
+        ),
         "froude": (("speed",), np.asarray(budget.froude)[:, 0], {"long_name": "Fn = U/sqrt(gL)"}),
-        "froude_ok": (("speed",), np.asarray(budget.froude)[:, 0] < 0.15, {"long_name": "Fn < 0.15"}),
+        "froude_ok": (
+            ("speed",),
+            np.asarray(budget.froude)[:, 0] < 0.15,
+            {"long_name": "Fn < 0.15"},
+        ),
     }
     for i, (c, u) in enumerate((("fx", "N"), ("fy", "N"), ("nz", "N m"))):
         data[c] = (dims, body[..., i], {"units": u, "long_name": f"body-axis load {c}"})
@@ -38,11 +48,28 @@ def resistance_dataset(budget: Budget, speeds, tps, *, tow=None, sea=None, attrs
         if tow.wind is not None:
             a["wind_coefficients"] = tow.wind.coefficients.label
     if sea is not None:
-        for k in ("hs", "gamma", "wind_speed", "current_speed", "wave_angle", "wind_angle", "current_angle"):
+        for k in (
+            "hs",
+            "gamma",
+            "wind_speed",
+            "current_speed",
+            "wave_angle",
+            "wind_angle",
+            "current_angle",
+        ):
             a[k] = float(getattr(sea, k))
         a["sea_state"] = sea.name
-    a["convention"] = ("angles: direction the wind/current/waves come from, counter-clockwise from the course, "
-                       "0 = from ahead; resistance = minus the along-course force")
+    a["convention"] = (
+        "angles: direction the wind/current/waves come from, counter-clockwise from the course, "
+        "0 = from ahead; resistance = minus the along-course force"
+    )
     a.update(attrs or {})
-    return xr.Dataset(data, coords={"speed": ("speed", speeds, {"units": "m/s"}), "tp": ("tp", tps, {"units": "s"}),
-                                    "component": list(COMPONENTS)}, attrs=a)
+    return xr.Dataset(
+        data,
+        coords={
+            "speed": ("speed", speeds, {"units": "m/s"}),
+            "tp": ("tp", tps, {"units": "s"}),
+            "component": list(COMPONENTS),
+        },
+        attrs=a,
+    )

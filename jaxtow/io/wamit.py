@@ -22,8 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..drift.qtf import QTF
-from ..units import G, RHO_SEA
+from .._units import RHO_SEA, G
+from ..drift._qtf import QTF
 
 _MODES = {1: 0, 2: 1, 6: 2}
 
@@ -58,11 +58,15 @@ def read_wamit_drift(path, *, ulen: float = 1.0, rho: float = RHO_SEA, g: float 
         k = 1 if mode <= 3 else 2
         vals[_MODES[mode], np.searchsorted(ws, w), np.searchsorted(bs, b)] = re * rho * g * ulen**k
     if np.isnan(vals).any():
-        raise ValueError(f"{path}: the table is incomplete (every period needs modes 1, 2, 6 at every heading)")
+        raise ValueError(
+            f"{path}: the table is incomplete (every period needs modes 1, 2, 6 at every heading)"
+        )
     return QTF(omega=ws, beta=bs, fx=vals[0], fy=vals[1], nz=vals[2])
 
 
-def write_wamit_drift(q: QTF, path, *, ulen: float = 1.0, rho: float = RHO_SEA, g: float = G) -> None:
+def write_wamit_drift(
+    q: QTF, path, *, ulen: float = 1.0, rho: float = RHO_SEA, g: float = G
+) -> None:
     """Write a `QTF` in the WAMIT mean-drift layout (see module docstring)."""
     omega = np.asarray(q.omega)
     beta_w = _wrap_deg(np.degrees(np.asarray(q.beta)) + 180.0)
@@ -74,8 +78,10 @@ def write_wamit_drift(q: QTF, path, *, ulen: float = 1.0, rho: float = RHO_SEA, 
             for mode, c in _MODES.items():
                 k = 1 if mode <= 3 else 2
                 re = vals[c, i, j] / (rho * g * ulen**k)
-                lines.append(f"{per:.17e} {bw:.17e} {bw:.17e} {mode:d} {abs(re):.17e} "
-                             f"{0.0 if re >= 0 else 180.0:.1f} {re:.17e} {0.0:.17e}")
+                lines.append(
+                    f"{per:.17e} {bw:.17e} {bw:.17e} {mode:d} {abs(re):.17e} "
+                    f"{0.0 if re >= 0 else 180.0:.1f} {re:.17e} {0.0:.17e}"
+                )
     Path(path).write_text("\n".join(lines) + "\n")
 
 
@@ -85,13 +91,24 @@ def qtf_to_dataset(q: QTF, attrs: dict | None = None):
     import xarray as xr
 
     ds = xr.Dataset(
-        {name: (("omega", "beta"), np.asarray(q.values[i]), {"units": u, "long_name": ln})
-         for i, (name, u, ln) in enumerate((("fx", "N m-2", "mean surge drift per zeta_a^2"),
-                                             ("fy", "N m-2", "mean sway drift per zeta_a^2"),
-                                             ("nz", "N m m-2", "mean yaw drift moment per zeta_a^2")))},
-        coords={"omega": ("omega", np.asarray(q.omega), {"units": "rad s-1"}),
-                "beta": ("beta", np.asarray(q.beta), {"units": "rad",
-                                                      "long_name": "wave heading, 0 = head seas, from-direction CCW"})},
+        {
+            name: (("omega", "beta"), np.asarray(q.values[i]), {"units": u, "long_name": ln})
+            for i, (name, u, ln) in enumerate(
+                (
+                    ("fx", "N m-2", "mean surge drift per zeta_a^2"),
+                    ("fy", "N m-2", "mean sway drift per zeta_a^2"),
+                    ("nz", "N m m-2", "mean yaw drift moment per zeta_a^2"),
+                )
+            )
+        },
+        coords={
+            "omega": ("omega", np.asarray(q.omega), {"units": "rad s-1"}),
+            "beta": (
+                "beta",
+                np.asarray(q.beta),
+                {"units": "rad", "long_name": "wave heading, 0 = head seas, from-direction CCW"},
+            ),
+        },
     )
     ds.attrs.update(attrs or {})
     ds.attrs["jaxtow_qtf"] = 1
@@ -107,8 +124,13 @@ def save_qtf(q: QTF, path, attrs: dict | None = None) -> None:
         v = np.asarray(q.values)
         table = np.column_stack([W.ravel(), B.ravel(), v[0].ravel(), v[1].ravel(), v[2].ravel()])
         head = [f"{k}: {v}" for k, v in (attrs or {}).items()]
-        np.savetxt(path, table, delimiter=",", fmt="%.17e",
-                   header="\n".join(head + ["omega [rad/s],beta [rad],fx [N/m2],fy [N/m2],nz [N m/m2]"]))
+        np.savetxt(
+            path,
+            table,
+            delimiter=",",
+            fmt="%.17e",
+            header="\n".join(head + ["omega [rad/s],beta [rad],fx [N/m2],fy [N/m2],nz [N m/m2]"]),
+        )
     else:
         qtf_to_dataset(q, attrs).to_netcdf(path)
 
@@ -119,11 +141,23 @@ def load_qtf(path) -> QTF:
         t = np.loadtxt(path, delimiter=",")
         ws, bs = np.unique(t[:, 0]), np.unique(t[:, 1])
         shape = (ws.size, bs.size)
-        return QTF(omega=ws, beta=bs, fx=t[:, 2].reshape(shape), fy=t[:, 3].reshape(shape), nz=t[:, 4].reshape(shape))
+        return QTF(
+            omega=ws,
+            beta=bs,
+            fx=t[:, 2].reshape(shape),
+            fy=t[:, 3].reshape(shape),
+            nz=t[:, 4].reshape(shape),
+        )
     import xarray as xr
 
     ds = xr.load_dataset(path)
-    return QTF(omega=ds.omega.values, beta=ds.beta.values, fx=ds.fx.values, fy=ds.fy.values, nz=ds.nz.values)
+    return QTF(
+        omega=ds.omega.values,
+        beta=ds.beta.values,
+        fx=ds.fx.values,
+        fy=ds.fy.values,
+        nz=ds.nz.values,
+    )
 
 
 def qtf_from_capytaine(fx, fy, nz) -> QTF:
@@ -131,7 +165,7 @@ def qtf_from_capytaine(fx, fy, nz) -> QTF:
 
     Each argument is an xarray DataArray per unit wave amplitude with dims ``omega`` and
     ``wave_direction`` (optionally a second heading dim, of which the diagonal is taken,
-    and complex values, of which the real part is taken: see shared/notes/capytaine.md).
+    and complex values, of which the real part is taken: see docs/bem.md).
     Capytaine's ``wave_direction`` is the direction the waves travel *to*, counter-clockwise
     from +x (π = head seas on a bow at +x), so β_jaxtow = wave_direction − π, wrapped.
     """
@@ -139,14 +173,20 @@ def qtf_from_capytaine(fx, fy, nz) -> QTF:
     for name, da in (("fx", fx), ("fy", fy), ("nz", nz)):
         extra = [d for d in da.dims if d not in ("omega", "wave_direction")]
         if len(extra) == 1 and da.sizes[extra[0]] == da.sizes["wave_direction"]:
-            vals = np.diagonal(np.asarray(da.transpose("omega", "wave_direction", extra[0])), axis1=1, axis2=2)
+            vals = np.diagonal(
+                np.asarray(da.transpose("omega", "wave_direction", extra[0])), axis1=1, axis2=2
+            )
         elif not extra:
             vals = np.asarray(da.transpose("omega", "wave_direction"))
         else:
-            raise ValueError(f"{name}: expected dims (omega, wave_direction[, second heading]), got {da.dims}")
+            raise ValueError(
+                f"{name}: expected dims (omega, wave_direction[, second heading]), got {da.dims}"
+            )
         arrays.append(np.real(vals))
     omega = np.asarray(fx["omega"].values, float)
-    beta = (np.asarray(fx["wave_direction"].values, float) - math.pi + math.pi) % (2 * math.pi) - math.pi
+    beta = (np.asarray(fx["wave_direction"].values, float) - math.pi + math.pi) % (
+        2 * math.pi
+    ) - math.pi
     order_w, order_b = np.argsort(omega), np.argsort(beta)
     vals = [a[order_w][:, order_b] for a in arrays]
     return QTF(omega=omega[order_w], beta=beta[order_b], fx=vals[0], fy=vals[1], nz=vals[2])

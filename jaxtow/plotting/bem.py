@@ -4,15 +4,16 @@ from __future__ import annotations
 
 import json
 
-import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+from .._units import RHO_SEA, G
 
-from ..units import G, RHO_SEA  # noqa: E402
-
-_LABELS = {"fx": "Fx / (rho g zeta_a^2 B)", "fy": "Fy / (rho g zeta_a^2 L)", "nz": "Nz / (rho g zeta_a^2 L^2)"}
+_LABELS = {
+    "fx": "Fx / (rho g zeta_a^2 B)",
+    "fy": "Fy / (rho g zeta_a^2 L)",
+    "nz": "Nz / (rho g zeta_a^2 L^2)",
+}
 
 
 def _dims(ds):
@@ -59,16 +60,28 @@ def plot_bem_qtf(ds, beta_deg=(0.0, 15.0), components=("fx", "fy", "nz")):
         for j, bd in enumerate(beta_deg):
             b = float(np.radians(bd))
             col = f"C{j}"
-            axes[k].plot(w, ds.far_field.sel(component=c).sel(beta=b, method="nearest") / s, "-", color=col,
-                         label=f"far field, beta {bd:g}")
-            axes[k].plot(w, ds.near_field.sel(component=c).sel(beta=b, method="nearest") / s, "--", color=col,
-                         label=f"near field, beta {bd:g}")
+            axes[k].plot(
+                w,
+                ds.far_field.sel(component=c).sel(beta=b, method="nearest") / s,
+                "-",
+                color=col,
+                label=f"far field, beta {bd:g}",
+            )
+            axes[k].plot(
+                w,
+                ds.near_field.sel(component=c).sel(beta=b, method="nearest") / s,
+                "--",
+                color=col,
+                label=f"near field, beta {bd:g}",
+            )
         axes[k].set_xlabel("omega [rad/s]")
         axes[k].set_ylabel(_LABELS[c])
         axes[k].axhline(0, color="0.7", lw=0.6)
     axes[0].legend(fontsize=7)
-    fig.suptitle(f"{ds.attrs.get('mesh_name', '')}: {ds.attrs.get('n_panels', '?')} panels "
-                 f"({ds.attrs.get('panel_size_m', '?')} m), Capytaine {ds.attrs.get('capytaine_version', '')}")
+    fig.suptitle(
+        f"{ds.attrs.get('mesh_name', '')}: {ds.attrs.get('n_panels', '?')} panels "
+        f"({ds.attrs.get('panel_size_m', '?')} m), Capytaine {ds.attrs.get('capytaine_version', '')}"
+    )
     fig.tight_layout()
     return fig
 
@@ -80,9 +93,24 @@ def plot_nearfield_parts(ds, beta_deg: float = 15.0, component: str = "fx"):
     fig, ax = plt.subplots(figsize=(6.5, 4))
     w = ds.omega.values
     for p in ds.part.values:
-        ax.plot(w, ds.near_field_parts.sel(component=component, part=p).sel(beta=b, method="nearest") / s, label=f"part {p}")
-    ax.plot(w, ds.near_field.sel(component=component).sel(beta=b, method="nearest") / s, "k-", lw=2, label="total")
-    ax.plot(w, ds.far_field.sel(component=component).sel(beta=b, method="nearest") / s, "k:", label="far field")
+        ax.plot(
+            w,
+            ds.near_field_parts.sel(component=component, part=p).sel(beta=b, method="nearest") / s,
+            label=f"part {p}",
+        )
+    ax.plot(
+        w,
+        ds.near_field.sel(component=component).sel(beta=b, method="nearest") / s,
+        "k-",
+        lw=2,
+        label="total",
+    )
+    ax.plot(
+        w,
+        ds.far_field.sel(component=component).sel(beta=b, method="nearest") / s,
+        "k:",
+        label="far field",
+    )
     ax.set_xlabel("omega [rad/s]")
     ax.set_ylabel(_LABELS[component])
     ax.set_title(f"near-field parts, beta = {beta_deg:g} deg")
@@ -102,10 +130,20 @@ def plot_mesh_convergence(summary, runs=None, beta_deg: float = 15.0):
         for c, ax in zip(("fx", "fy"), axes[:2]):
             for i, (p, ds) in enumerate(sorted(runs.items(), reverse=True)):
                 s = _norm(ds, c)
-                ax.plot(ds.omega, ds.near_field.sel(component=c).sel(beta=b, method="nearest") / s, "--", color=f"C{i}",
-                        label=f"NF {p:g} m")
-                ax.plot(ds.omega, ds.far_field.sel(component=c).sel(beta=b, method="nearest") / s, "-", color=f"C{i}",
-                        label=f"FF {p:g} m")
+                ax.plot(
+                    ds.omega,
+                    ds.near_field.sel(component=c).sel(beta=b, method="nearest") / s,
+                    "--",
+                    color=f"C{i}",
+                    label=f"NF {p:g} m",
+                )
+                ax.plot(
+                    ds.omega,
+                    ds.far_field.sel(component=c).sel(beta=b, method="nearest") / s,
+                    "-",
+                    color=f"C{i}",
+                    label=f"FF {p:g} m",
+                )
             ax.set_xlabel("omega [rad/s]")
             ax.set_ylabel(_LABELS[c])
             ax.set_title(f"beta = {beta_deg:g} deg")
@@ -114,9 +152,18 @@ def plot_mesh_convergence(summary, runs=None, beta_deg: float = 15.0):
     for ax, per in zip(axes[k:], ("panels_per_breadth", "panels_per_length")):
         x = summary[per].values
         for c, mk in (("fx", "o"), ("fy", "s")):
-            ax.plot(x, summary.near_vs_far.sel(component=c, zone="all"), mk + "-", label=f"{c}: NF vs own FF")
-            ax.plot(x, summary.mse.sel(component=c, zone="all", drift_method="near_field"), mk + ":",
-                    label=f"{c}: NF vs finest FF")
+            ax.plot(
+                x,
+                summary.near_vs_far.sel(component=c, zone="all"),
+                mk + "-",
+                label=f"{c}: NF vs own FF",
+            )
+            ax.plot(
+                x,
+                summary.mse.sel(component=c, zone="all", drift_method="near_field"),
+                mk + ":",
+                label=f"{c}: NF vs finest FF",
+            )
         ax.set_yscale("log")
         ax.set_xlabel(per.replace("_", " "))
         ax.set_ylabel("relative MSE")

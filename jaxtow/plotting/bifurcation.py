@@ -2,14 +2,15 @@
 
 from __future__ import annotations
 
-import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-MARKERS = {"branch_point": ("s", "k"), "fold": ("D", "tab:purple"), "hopf": ("*", "tab:red"),
-           "neutral_saddle": ("x", "0.4")}
+MARKERS = {
+    "branch_point": ("s", "k"),
+    "fold": ("D", "tab:purple"),
+    "hopf": ("*", "tab:red"),
+    "neutral_saddle": ("x", "0.4"),
+}
 
 
 def plot_branch(branch, ax=None, orbits=None, title=None):
@@ -24,7 +25,9 @@ def plot_branch(branch, ax=None, orbits=None, title=None):
             ax.plot(b.p, y, ls, color="tab:blue", lw=1.5)
         for s in b.special:
             m, c = MARKERS[s.kind]
-            ax.plot(s.parameter, np.degrees(s.psi), m, color=c, ms=8, label=s.kind.replace("_", " "))
+            ax.plot(
+                s.parameter, np.degrees(s.psi), m, color=c, ms=8, label=s.kind.replace("_", " ")
+            )
     if orbits:
         p = [o.parameter for o in orbits]
         amp = [np.degrees(o.yaw_range) for o in orbits]
@@ -42,7 +45,9 @@ def plot_branch(branch, ax=None, orbits=None, title=None):
 def plot_hopf_curve(curve, ax=None, labels=("xp", "l0"), **kw):
     """A Hopf curve (n, 2) in a parameter plane, e.g. over `plot_stability_map`."""
     ax = ax or plt.subplots(figsize=(6, 4.5))[1]
-    ax.plot(curve[:, 0], curve[:, 1], "-", color=kw.pop("color", "k"), lw=2, label="Hopf curve", **kw)
+    ax.plot(
+        curve[:, 0], curve[:, 1], "-", color=kw.pop("color", "k"), lw=2, label="Hopf curve", **kw
+    )
     ax.set_xlabel(f"{labels[0]}' [-]")
     ax.set_ylabel(f"{labels[1]}' [-]")
     return ax

@@ -2,14 +2,14 @@
 
 from __future__ import annotations
 
-import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-BRANCH_STYLE = {-1: ("psi < 0 side", "tab:orange"), 0: ("straight behind", "tab:blue"),
-                1: ("psi > 0 side", "tab:green")}
+BRANCH_STYLE = {
+    -1: ("psi < 0 side", "tab:orange"),
+    0: ("straight behind", "tab:blue"),
+    1: ("psi > 0 side", "tab:green"),
+}
 
 
 def _assumed_note(ds):
@@ -67,8 +67,9 @@ def plot_stability_map(ds, x: str, y: str, branch: int = 0, ax=None, title: str 
     mr = ds["max_real"].where(ds["valid"] & (ds["branch"] == branch)).max("equilibrium")
     mr = mr.transpose(y, x).values
     lim = np.nanmax(np.abs(mr)) if np.isfinite(mr).any() else 1.0
-    pc = ax.pcolormesh(ds[x].values, ds[y].values, mr, cmap="RdBu_r", vmin=-lim, vmax=lim,
-                       shading="auto")
+    pc = ax.pcolormesh(
+        ds[x].values, ds[y].values, mr, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="auto"
+    )
     if np.isfinite(mr).any() and np.nanmin(mr) < 0 < np.nanmax(mr):
         ax.contour(ds[x].values, ds[y].values, mr, levels=[0.0], colors="k", linewidths=1)
     plt.colorbar(pc, ax=ax, label="max Re(lambda) [-]")

@@ -2,11 +2,8 @@
 
 from __future__ import annotations
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
 
 def plot_sensitivity_ranking(ds, ax=None, title: str = "", top: int | None = None):
@@ -19,7 +16,9 @@ def plot_sensitivity_ranking(ds, ax=None, title: str = "", top: int | None = Non
     order = np.argsort(np.asarray(ds.importance))[: top or el.shape[1]][::-1]
     lo, hi = mean - el.min(axis=0), el.max(axis=0) - mean
     colours = ["tab:red" if m > 0 else "tab:blue" for m in mean[order]]
-    ax.barh(np.arange(order.size), mean[order], xerr=[lo[order], hi[order]], color=colours, alpha=0.8)
+    ax.barh(
+        np.arange(order.size), mean[order], xerr=[lo[order], hi[order]], color=colours, alpha=0.8
+    )
     ax.set_yticks(np.arange(order.size), [str(ds.parameter.values[i]) for i in order])
     ax.axvline(0.0, color="k", lw=0.8)
     ax.set_xlabel("p * d(max Re lambda)/dp  (red: raising p destabilises)")
@@ -38,8 +37,15 @@ def plot_design_map(grid_result, optimum=None, ax=None, title: str = "", levels=
     plt.colorbar(cs, ax=ax, label="objective (smoothed max Re lambda + penalties)")
     ax.plot(grid_result.params[nx], grid_result.params[ny], "kx", ms=10, label="grid optimum")
     if optimum is not None:
-        ax.plot(optimum.params[nx], optimum.params[ny], "*", color="gold", mec="k", ms=14,
-                label=f"optimiser ({optimum.n_evaluations} evaluations)")
+        ax.plot(
+            optimum.params[nx],
+            optimum.params[ny],
+            "*",
+            color="gold",
+            mec="k",
+            ms=14,
+            label=f"optimiser ({optimum.n_evaluations} evaluations)",
+        )
     ax.set_xlabel(f"{nx}'")
     ax.set_ylabel(f"{ny}'")
     ax.legend(fontsize=8)

@@ -2,24 +2,29 @@
 
 from __future__ import annotations
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
 COLOURS = {"current": "tab:blue", "wind": "tab:green", "waves": "tab:red", "tug": "tab:purple"}
 
 
 def _components(ds):
     """Components that are not zero everywhere."""
-    return [c for c in ds.component.values if np.any(np.abs(ds.resistance.sel(component=c).values) > 0)]
+    return [
+        c for c in ds.component.values if np.any(np.abs(ds.resistance.sel(component=c).values) > 0)
+    ]
 
 
 def _note(ds, ax):
     if any("ILLUSTRATIVE" in str(v) for k, v in ds.attrs.items() if k.startswith("assumed_")):
-        ax.text(0.01, 0.01, "ILLUSTRATIVE wind table/height: see dataset attrs", transform=ax.transAxes,
-                fontsize=7, color="0.4")
+        ax.text(
+            0.01,
+            0.01,
+            "ILLUSTRATIVE wind table/height: see dataset attrs",
+            transform=ax.transAxes,
+            fontsize=7,
+            color="0.4",
+        )
 
 
 def _finish_budget_axes(ds, axes, xlabel, title, legend_both: bool):
@@ -49,9 +54,20 @@ def plot_budget_vs_tp(ds, speeds=None, tp_range=None, axes=None, title: str = ""
         ls = styles[j % len(styles)]
         axes[0].plot(d.tp, d.total / 1e3, "k" + ls, label=f"total, U = {float(d.speed):g} m/s")
         for c in _components(ds):
-            axes[0].plot(d.tp, d.resistance.sel(component=c) / 1e3, ls, color=COLOURS[c],
-                         label=f"{c}, U = {float(d.speed):g} m/s")
-            axes[1].plot(d.tp, d.share.sel(component=c), ls, color=COLOURS[c], label=f"{c}, U = {float(d.speed):g} m/s")
+            axes[0].plot(
+                d.tp,
+                d.resistance.sel(component=c) / 1e3,
+                ls,
+                color=COLOURS[c],
+                label=f"{c}, U = {float(d.speed):g} m/s",
+            )
+            axes[1].plot(
+                d.tp,
+                d.share.sel(component=c),
+                ls,
+                color=COLOURS[c],
+                label=f"{c}, U = {float(d.speed):g} m/s",
+            )
     if tp_range is not None:
         for ax in axes:
             ax.axvspan(*tp_range, color="0.9", zorder=0, lw=0, label="physical Tp range")
@@ -70,7 +86,9 @@ def plot_budget_vs_speed(ds, tp, axes=None, title: str = ""):
         share = d.share.sel(component=c).values
         axes[1].fill_between(d.speed, bottom, bottom + share, color=COLOURS[c], alpha=0.6, label=c)
         bottom = bottom + share
-    return _finish_budget_axes(ds, axes, "tow speed U [m/s]", title or f"Tp = {float(d.tp):g} s", legend_both=True)
+    return _finish_budget_axes(
+        ds, axes, "tow speed U [m/s]", title or f"Tp = {float(d.tp):g} s", legend_both=True
+    )
 
 
 def plot_operating_point(speeds, pull, resist, point=None, ax=None, title: str = ""):
@@ -83,8 +101,13 @@ def plot_operating_point(speeds, pull, resist, point=None, ax=None, title: str =
         ax.plot(speeds, np.asarray(r) / 1e3, label=f"resistance, {name}")
     if point is not None:
         ax.plot([point[0]], [point[1] / 1e3], "o", color="tab:red")
-        ax.annotate(f"U = {point[0]:.2f} m/s", (point[0], point[1] / 1e3), textcoords="offset points",
-                    xytext=(6, 6), fontsize=8)
+        ax.annotate(
+            f"U = {point[0]:.2f} m/s",
+            (point[0], point[1] / 1e3),
+            textcoords="offset points",
+            xytext=(6, 6),
+            fontsize=8,
+        )
     ax.set_xlabel("tow speed U [m/s]")
     ax.set_ylabel("force [kN]")
     ax.set_ylim(bottom=0)

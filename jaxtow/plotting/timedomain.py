@@ -2,11 +2,8 @@
 
 from __future__ import annotations
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
 
 def plot_time_traces(traj: dict, title: str = ""):
@@ -26,7 +23,11 @@ def plot_phase_portraits(traj: dict, title: str = ""):
     """Phase portraits of surge position, sway offset and heading (thesis figs 6.6, 6.7)."""
     t = traj["t"]
     x = traj["cog_x"] - traj["tug_x"]
-    series = [("x' - x_tug' [L]", x), ("y' [L]", traj["sway_offset"]), ("psi [deg]", np.degrees(traj["psi"]))]
+    series = [
+        ("x' - x_tug' [L]", x),
+        ("y' [L]", traj["sway_offset"]),
+        ("psi [deg]", np.degrees(traj["psi"])),
+    ]
     fig, axes = plt.subplots(1, 3, figsize=(11, 3.4))
     for ax, (label, s) in zip(axes, series):
         ax.plot(s, np.gradient(s, t), lw=0.7)

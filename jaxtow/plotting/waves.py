@@ -3,13 +3,10 @@ Tp with the physical range shaded (thesis fig. 4.3b)."""
 
 from __future__ import annotations
 
-import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-
-from ..waves import physical_tp_range  # noqa: E402
+from ..waves import physical_tp_range
 
 
 def plot_spectra(omega, spectra: dict, ax=None, title: str = "wave spectra"):

@@ -2,11 +2,8 @@
 
 from __future__ import annotations
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+import matplotlib.pyplot as plt
+import numpy as np
 
 
 def _note(ax, note):
@@ -25,7 +22,9 @@ def plot_max_real_map(l0, y, max_real, *, ylabel="omega [rad/s]", title="", note
     if np.nanmin(z) < 0 < np.nanmax(z):
         ax.contour(l0, y, z, levels=[0.0], colors="k", linewidths=1.2)
     if np.isnan(z).any():
-        ax.contourf(l0, y, np.isnan(z).astype(float), levels=[0.5, 1.5], hatches=["//"], colors="none")
+        ax.contourf(
+            l0, y, np.isnan(z).astype(float), levels=[0.5, 1.5], hatches=["//"], colors="none"
+        )
     ax.set_xlabel("l0' [-]")
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=9)
@@ -60,7 +59,7 @@ def plot_heading_map(x, omega, psi, xlabel, *, ylabel="omega [rad/s]", title="")
 
 def plot_runs(runs: dict, title=""):
     """Sway offset and heading of several runs (thesis figs 6.20-6.22, 7.5)."""
-    from ..metrics import trajectory
+    from .._metrics import trajectory
 
     fig, axes = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
     for tag, (model, sim) in runs.items():

@@ -1,16 +1,18 @@
-"""Wave spectra and irregular seas (thesis sections 2.3, 3.1, 6.3; MODEL.md section 6).
+"""Wave spectra and irregular seas (thesis sections 2.3, 3.1, 6.3; docs/model.md section 6).
 
 SI units and rad/s inside; helpers convert periods and Hz at the boundary.
 """
 
-from .irregular import (
+from ._irregular import (
+    DEFAULT_OMEGA as DEFAULT_OMEGA,
     mean_drift as mean_drift,
     mean_drift_damping as mean_drift_damping,
     slow_drift_force_spectrum as slow_drift_force_spectrum,
+    spectral_integral as spectral_integral,
     synthesise_drift_force as synthesise_drift_force,
     synthesise_elevation as synthesise_elevation,
 )
-from .spectra import (
+from ._spectra import (
     AbstractSpectrum as AbstractSpectrum,
     Jonswap as Jonswap,
     PiersonMoskowitz as PiersonMoskowitz,
@@ -24,3 +26,25 @@ from .spectra import (
     spectral_periods as spectral_periods,
     spectrum_per_hz as spectrum_per_hz,
 )
+
+__all__ = [
+    "DEFAULT_OMEGA",
+    "mean_drift",
+    "mean_drift_damping",
+    "slow_drift_force_spectrum",
+    "spectral_integral",
+    "synthesise_drift_force",
+    "synthesise_elevation",
+    "AbstractSpectrum",
+    "Jonswap",
+    "PiersonMoskowitz",
+    "check_frequency_grid",
+    "hz_to_omega",
+    "jonswap",
+    "period_to_omega",
+    "physical_tp_range",
+    "pierson_moskowitz",
+    "spectral_moment",
+    "spectral_periods",
+    "spectrum_per_hz",
+]

@@ -1,0 +1,126 @@
+"""The tow model and its vector field, thesis eqs 6.1-6.6 (docs/model.md section 2).
+
+State y = (u', v', r', l', γ, ψ): surge, sway, yaw rate of the towed vessel (body axes, at
+the CoG), towline length, towline angle to the tug's track, heading. The tug moves at unit
+non-dimensional speed along the earth x-axis and does not deviate (thesis assumption).
+The bow-hawser point H lies at (−l cos γ, +l sin γ) relative to the tug, the CoG at
+H − x_p (cos ψ, sin ψ); the towline pulls H toward the tug.
+
+Transverse attachment offset (bridle studies, thesis section 8.4): with H at body
+coordinates (x_p', y_p') (y to port) the towline force F = T'(cos(γ+ψ), −sin(γ+ψ)) in body
+axes has the moment N = x_p' F_y − y_p' F_x = −T'(x_p' sin(γ+ψ) + y_p' cos(γ+ψ)), and H moves
+with the body velocity (u' − r' y_p', v' + r' x_p'), which replaces (u', v' + r' x_p') in the
+towline kinematics (eqs 6.4-6.5): l̇' gains + r' y_p' cos(γ+ψ) and γ̇ gains
+− r' y_p' sin(γ+ψ)/l'. The CoG lies at H − x_p'(cos ψ, sin ψ) − y_p'(−sin ψ, cos ψ). With
+y_p' = 0 every expression is the thesis's (the added terms are exactly zero).
+"""
+
+from __future__ import annotations
+
+import math
+
+import equinox as eqx
+import jax.numpy as jnp
+from jaxtyping import Array, Float
+
+from . import _rules as V
+from ._towline import AbstractTowline
+from ._vessel import Vessel
+from .forces._base import AbstractExternalForce, NoExternalForce
+
+STATE_NAMES = ("u", "v", "r", "l", "gamma", "psi")
+STATE_LONG_NAMES = (
+    "surge velocity u' (by U_tug)",
+    "sway velocity v' (by U_tug)",
+    "yaw rate r' (by U_tug/L)",
+    "towline length l' (by L)",
+    "towline angle gamma [rad]",
+    "heading psi [rad]",
+)
+
+
+class TowModel(V.Checked):
+    """A vessel on a towline behind a tug: the full parameter set of eqs 6.1-6.6.
+
+    ``psi_max``: largest |ψ| [rad] at which the manoeuvring model is trusted; equilibria
+    beyond it are flagged (default π/2: the vessel must move bow first).
+    """
+
+    vessel: Vessel
+    towline: AbstractTowline
+    external: AbstractExternalForce = NoExternalForce()
+    psi_max: Float[Array, ""] = V.rule_field(rule=V.in_range(0.0, math.pi), default=math.pi / 2)
+
+    @property
+    def assumed(self) -> tuple:
+        """Values of this model that are documented estimates, not published data."""
+        return self.vessel.assumed
+
+
+class ForceBreakdown(eqx.Module):
+    """Forces acting on the vessel, per DOF (X', Y', N'), split by origin (each (3,)):
+    ``manoeuvring`` (MMG hull forces), ``towline`` (eqs 2.8-2.10), ``coupling`` (the
+    inertia-coupling terms (m+a22) v r, −(m+a11) u r, 0 of eqs 6.1-6.2), ``external`` (the
+    environmental hook), ``inertia`` (the generalised masses (m+a11, m+a22, Izz+a66)); and
+    the scalar ``tension`` T'."""
+
+    manoeuvring: Float[Array, 3]
+    towline: Float[Array, 3]
+    coupling: Float[Array, 3]
+    external: Float[Array, 3]
+    inertia: Float[Array, 3]
+    tension: Float[Array, ""]
+
+    @property
+    def total(self) -> Float[Array, 3]:
+        """The sum of the forces (without the inertia)."""
+        return self.manoeuvring + self.towline + self.coupling + self.external
+
+
+def force_breakdown(t, y, model: TowModel) -> ForceBreakdown:
+    """The `ForceBreakdown` of the vessel at time t and state y."""
+    u, v, r, l, gamma, psi = (y[i] for i in range(6))
+    ves = model.vessel
+    T = model.towline.tension(l)
+    a = gamma + psi
+    xp, yp = model.towline.xp, model.towline.yp
+    towline = jnp.stack([T * jnp.cos(a), -T * jnp.sin(a), -T * (xp * jnp.sin(a) + yp * jnp.cos(a))])
+    coupling = jnp.stack([(ves.m + ves.a22) * v * r, -(ves.m + ves.a11) * u * r, jnp.zeros_like(r)])
+    return ForceBreakdown(
+        manoeuvring=ves.manoeuvring_forces(u, v, r),
+        towline=towline,
+        coupling=coupling,
+        external=model.external(t, y, model),
+        inertia=ves.inertia(),
+        tension=T,
+    )
+
+
+def kinematics(y, xp, yp=0.0) -> Float[Array, 3]:
+    """Towline kinematics (l̇', γ̇, ψ̇), thesis eqs 6.4-6.6 (docs/model.md section 2), with the
+    transverse offset y_p' of the module docstring."""
+    u, v, r, l, gamma, psi = (y[i] for i in range(6))
+    a = gamma + psi
+    # velocity of the attachment point (body axes); with yp = 0, uP = u exactly, so the
+    # rest of the arithmetic is the thesis's whatever the compiler folds (batch = single runs)
+    uP = u - r * yp
+    vP = v + r * xp
+    ldot = -uP * jnp.cos(a) + vP * jnp.sin(a) + jnp.cos(gamma)
+    gdot = (uP * jnp.sin(a) + vP * jnp.cos(a) - jnp.sin(gamma)) / l
+    return jnp.stack([ldot, gdot, r])
+
+
+def vector_field(t, y: Float[Array, 6], model: TowModel) -> Float[Array, 6]:
+    """dy/dt' of the tow, thesis eqs 6.1-6.6; signature f(t, y, args) as in diffrax."""
+    y = jnp.asarray(y)
+    fb = force_breakdown(t, y, model)
+    return jnp.concatenate(
+        [fb.total / fb.inertia, kinematics(y, model.towline.xp, model.towline.yp)]
+    )
+
+
+def sway_offset(y, xp, yp=0.0):
+    """Sway offset of the CoG from the tug's track, y' = l' sin γ − x_p' sin ψ (eqs 2.16,
+    2.18; − y_p' cos ψ with a transverse attachment offset); the fishtailing path width is
+    its peak-to-peak value."""
+    return y[..., 3] * jnp.sin(y[..., 4]) - xp * jnp.sin(y[..., 5]) - yp * jnp.cos(y[..., 5])

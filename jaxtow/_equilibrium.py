@@ -1,0 +1,280 @@
+"""Equilibria of the tow: analytic (no environment) and numerical (any force model).
+
+At every equilibrium r' = 0 and the vessel moves with the tug: body velocity
+(u', v') = (cos ψ, −sin ψ) (docs/model.md section 3). The towline then balances the hull and
+environmental forces (X, Y, N) evaluated at that motion:
+
+    T' cos(γ+ψ) = −X,   T' sin(γ+ψ) = Y,   T' x_p' sin(γ+ψ) = N.
+
+Eliminating T' sin(γ+ψ) between sway and yaw leaves one scalar equation in the heading,
+the heading residual (thesis eqs 6.17-6.23 generalised; docs/model.md section 4):
+
+    F(ψ) = N(ψ) − x_p' Y(ψ) = 0.
+
+`equilibria` brackets every sign change of F on a fine ψ grid and refines each root with
+optimistix (bisection, then Newton polish) to machine precision, so linearisation happens
+exactly at the equilibrium (the thesis's ±0.5° rounding, section 7.4.3, is removed).
+Roots where F touches zero without changing sign (exactly at a pitchfork or fold) are not
+bracketed; away from such points every root is found.
+
+Naming: equilibria are ordered by ascending ψ and labelled by ``branch`` = −1 (ψ < 0),
+0 (straight behind the tug, ψ = 0) and +1 (ψ > 0). Thesis chapter 2 calls these positions
+1, 2 and 3; chapter 6 calls them 2, 3 and 4.
+"""
+
+from __future__ import annotations
+
+import math
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+from jaxtyping import Array, Bool, Float, Int
+
+from . import _rules as V
+from ._dynamics import TowModel, force_breakdown, vector_field
+from ._roots import bisect, brackets, newton
+from ._rules import guard
+from ._towline import Towline
+from .forces._base import NoExternalForce
+
+#: Tolerance below which |ψ| counts as straight behind the tug.
+STRAIGHT_TOL = 1e-9
+#: Headings evaluated together in the residual scan (bounds memory for costly force models).
+SCAN_BATCH = 64
+
+
+class Equilibria(eqx.Module):
+    """A set of equilibria (fixed number of slots; ``found`` marks the real ones).
+
+    Fields, each with a leading axis of size k:
+
+    - ``state`` (k, 6): (u, v, r, l, γ, ψ) at the equilibrium;
+    - ``psi``, ``gamma`` [rad], ``tension`` T', ``length`` l';
+    - ``found``: the slot holds a root (padding slots repeat a found root);
+    - ``converged``: the root finder succeeded;
+    - ``taut``: T' > 0 (the towline is not slack);
+    - ``behind_tug``: |γ| < π/2;
+    - ``in_range``: |ψ| <= model.psi_max (inside the manoeuvring model's range);
+    - ``branch``: −1, 0, +1 (see module docstring);
+    - ``residual``: max |f(y)| of the full vector field at the state;
+
+    and ``n_roots``, the number of roots the heading scan saw (more than k means roots were
+    dropped; the analytic solution gives the number found).
+    """
+
+    state: Float[Array, "k 6"]
+    psi: Float[Array, " k"]
+    gamma: Float[Array, " k"]
+    tension: Float[Array, " k"]
+    length: Float[Array, " k"]
+    found: Bool[Array, " k"]
+    converged: Bool[Array, " k"]
+    taut: Bool[Array, " k"]
+    behind_tug: Bool[Array, " k"]
+    in_range: Bool[Array, " k"]
+    branch: Int[Array, " k"]
+    residual: Float[Array, " k"]
+    n_roots: Int[Array, ""]
+
+    @property
+    def valid(self) -> Bool[Array, " k"]:
+        """Found, converged, taut, behind the tug and inside the model's heading range."""
+        return self.found & self.converged & self.taut & self.behind_tug & self.in_range
+
+    def __len__(self) -> int:
+        return int(self.psi.shape[-1])
+
+    def select(self, mask) -> Equilibria:
+        """Eager: keep the slots where `mask` (a concrete boolean array) holds."""
+        import numpy as np
+
+        keep = np.flatnonzero(np.asarray(mask))
+        return jax.tree_util.tree_map(lambda a: a[keep] if jnp.ndim(a) else a, self)
+
+    def compact(self) -> Equilibria:
+        """Eager: drop the padding slots (keep ``found``)."""
+        return self.select(self.found)
+
+
+def equilibrium_kinematics(psi):
+    """State at heading ψ moving with the tug: (cos ψ, −sin ψ, 0, ·, ·, ψ) (eqs 6.7-6.10).
+
+    l and γ are set to placeholders (1, 0); they do not enter hull or environmental forces.
+    """
+    psi = jnp.asarray(psi)
+    one = jnp.ones_like(psi)
+    return jnp.stack([jnp.cos(psi), -jnp.sin(psi), 0 * psi, one, 0 * psi, psi])
+
+
+def hull_forces_at_heading(psi, model: TowModel):
+    """Non-towline forces (X', Y', N') on the vessel moving with the tug at heading ψ."""
+    fb = force_breakdown(0.0, equilibrium_kinematics(psi), model)
+    return fb.manoeuvring + fb.coupling + fb.external
+
+
+def heading_residual(psi, model: TowModel):
+    """F(ψ) = N(ψ) − x_p' Y(ψ) (docs/model.md section 4; thesis eqs 6.17-6.23), + y_p' X(ψ) for
+    a transverse attachment offset (the towline moment −T'(x_p' sin a + y_p' cos a) with
+    T' sin a = Y, T' cos a = −X; see `jaxtow.dynamics`)."""
+    X, Y, N = hull_forces_at_heading(psi, model)
+    return N - model.towline.xp * Y + model.towline.yp * X
+
+
+def _state_from_heading(psi, model: TowModel):
+    """Towline angle, tension and length that balance the forces at heading ψ."""
+    X, Y, _ = hull_forces_at_heading(psi, model)
+    a = jnp.arctan2(Y, -X)  # γ + ψ: direction of the required towline pull
+    T2 = X**2 + Y**2
+    T = jnp.sqrt(jnp.where(T2 > 0, T2, 1.0)) * (T2 > 0)
+    gamma = jnp.arctan2(jnp.sin(a - psi), jnp.cos(a - psi))
+    # Where no pull is needed the line is slack; place it at its unstretched length.
+    length = jnp.where(
+        T > 0, model.towline.length_at_tension(jnp.where(T > 0, T, 1.0)), model.towline.l0
+    )
+    y = equilibrium_kinematics(psi)
+    state = y.at[3].set(length).at[4].set(gamma)
+    return state, gamma, T, length
+
+
+def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
+    state, gamma, T, length = jax.vmap(_state_from_heading, in_axes=(0, None))(psi, model)
+    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, model))))(state)
+    branch = jnp.where(jnp.abs(psi) <= STRAIGHT_TOL, 0, jnp.sign(psi)).astype(jnp.int32)
+    return Equilibria(
+        state=state,
+        psi=psi,
+        gamma=gamma,
+        tension=T,
+        length=length,
+        found=found,
+        converged=converged & jnp.isfinite(psi),
+        taut=T > 0,
+        behind_tug=jnp.cos(gamma) > 0,
+        in_range=jnp.abs(psi) <= model.psi_max,
+        branch=branch,
+        residual=residual,
+        n_roots=jnp.asarray(n_roots, jnp.int32),
+    )
+
+
+def _refine(lo, hi, exact, model: TowModel, max_steps: int):
+    """Root of F on [lo, hi] to machine precision: bisection, then a two-step Newton polish
+    (`jaxtow._roots`)."""
+    psi, ok = bisect(
+        lambda p, m: heading_residual(p, m), lo, hi, model, atol=1e-13, max_steps=max_steps
+    )
+    psi, _ = newton(
+        lambda p, m: heading_residual(p, m),
+        psi,
+        model,
+        rtol=0.0,
+        atol=0.0,
+        max_steps=2,
+        lower=lo,
+        upper=hi,
+    )
+    return jnp.where(exact, lo, psi), ok | exact
+
+
+def equilibria_fixed(
+    model: TowModel,
+    *,
+    n_grid: int = 2001,
+    max_roots: int = 8,
+    psi_range: float = math.pi / 2,
+    max_steps: int = 128,
+    check: bool = True,
+) -> Equilibria:
+    """All equilibria in |ψ| <= psi_range, as a fixed-size, jittable, vmappable set.
+
+    The heading residual is scanned on ``n_grid`` points (odd, so ψ = 0 is a grid point);
+    each sign change is refined. At most ``max_roots`` roots are kept (``found`` marks
+    them; padding slots repeat the first root so that Jacobians stay finite);
+    ``n_roots`` counts the sign changes seen (more than ``max_roots`` means roots were
+    dropped). With ``check=True`` invalid parameters raise
+    at run time (also under jit/vmap) with a message naming them; sweeps, which validate
+    their grids beforehand, pass ``check=False``.
+    """
+    if n_grid < 3 or n_grid % 2 == 0:
+        raise ValueError(f"parameter 'n_grid' must be an odd integer >= 3, got {n_grid}")
+    if not 0 < psi_range <= math.pi:
+        raise ValueError(f"parameter 'psi_range' must lie in (0, pi], got {psi_range}")
+    grid = jnp.linspace(-psi_range, psi_range, n_grid)
+    # batches of headings (not one vmap over all): an expensive force model (an irregular-sea
+    # drift integral, say) would otherwise materialise n_grid copies of its intermediates
+    F = jax.lax.map(lambda p: heading_residual(p, model), grid, batch_size=SCAN_BATCH)
+    idx, found, exact, count = brackets(F, max_roots)
+    psi, ok = jax.vmap(_refine, in_axes=(0, 0, 0, None, None))(
+        grid[idx], grid[idx + 1], exact, model, max_steps
+    )
+    eqs = _finish(psi, found, ok & (count > 0), model, count)
+    return guard(eqs, model.checks()) if check else eqs
+
+
+def equilibria(
+    model: TowModel, *, n_grid: int = 2001, max_roots: int = 8, psi_range: float = math.pi / 2
+) -> Equilibria:
+    """All equilibria of `model` (eager): only the found roots, ordered by ψ.
+
+    Parameters are checked (a clear error names any invalid one). See `equilibria_fixed`
+    for the jittable form used inside sweeps.
+    """
+    eqs = _equilibria_jit(model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range)
+    if int(eqs.n_roots) > max_roots:  # refuse a silently truncated result
+        raise ValueError(
+            f"{int(eqs.n_roots)} equilibria found but max_roots={max_roots}; raise max_roots"
+        )
+    return eqs.compact()
+
+
+_equilibria_jit = jax.jit(
+    equilibria_fixed,
+    static_argnames=("n_grid", "max_roots", "psi_range", "max_steps"),
+)
+
+
+def analytic_equilibria(model: TowModel, *, check: bool = True) -> Equilibria:
+    """Closed-form equilibria, thesis eqs 6.7-6.13 (docs/model.md section 3).
+
+    Valid for the calm-water model (no external force) with an elastic towline. Three
+    slots ordered by ψ: the ψ < 0 side, straight behind, the ψ > 0 side; the side slots are
+    ``found`` only where v'_eq² = (N_v − Y_v x_p)/(Y_vvv x_p − N_vvv) lies in (0, 1).
+    """
+    if not isinstance(model.external, NoExternalForce):
+        raise ValueError("analytic_equilibria needs a model without external forces")
+    if not isinstance(model.towline, Towline):
+        raise ValueError("analytic_equilibria needs the elastic Towline (eq. 2.11)")
+    if V.is_concrete(model.towline.yp) and float(model.towline.yp) != 0.0:
+        raise ValueError("analytic_equilibria needs a centred towline (yp = 0); use equilibria")
+    ves, xp, EA, l0 = model.vessel, model.towline.xp, model.towline.EA, model.towline.l0
+    rad = (ves.Nv - ves.Yv * xp) / (ves.Yvvv * xp - ves.Nvvv)  # eq. 6.8
+    side = (rad > 0) & (rad < 1)
+    vs = jnp.sqrt(jnp.where(side, rad, 0.25))
+    v = jnp.stack([vs, 0.0 * vs, -vs])  # v = +sqrt gives ψ < 0
+    psi = jnp.arcsin(-v)  # eq. 6.9
+    u = jnp.cos(psi)  # eq. 6.10
+    num = ves.R0 * u**2 - ves.Xvv * v**2
+    gamma = jnp.arctan((ves.Yvvv * v**3 + ves.Yv * v) / num) - psi  # eq. 6.11
+    T = num / jnp.cos(gamma + psi)  # eq. 6.12
+    length = (T / EA + 1.0) * l0  # eq. 6.13
+    state = jnp.stack([u, v, 0 * u, length, gamma, psi], axis=-1)
+    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, model))))(state)
+    found = jnp.stack([side, jnp.asarray(True), side])
+    branch = jnp.array([-1, 0, 1], dtype=jnp.int32)
+    eqs = Equilibria(
+        state=state,
+        psi=psi,
+        gamma=gamma,
+        tension=T,
+        length=length,
+        found=found,
+        converged=jnp.ones(3, bool),
+        taut=T > 0,
+        behind_tug=jnp.cos(gamma) > 0,
+        in_range=jnp.abs(psi) <= model.psi_max,
+        branch=branch,
+        residual=residual,
+        n_roots=jnp.sum(found).astype(jnp.int32),
+    )
+    return guard(eqs, model.checks()) if check else eqs

@@ -1,0 +1,86 @@
+"""Root finding: the one implementation behind every root jaxtow solves.
+
+Every root problem of jaxtow goes through these helpers, and they go through optimistix
+(`optimistix.root_find`, whose implicit adjoint gives exact derivatives of a root with
+respect to the parameters):
+
+* `brackets`: scan-then-refine, step one — the sign changes of a sampled function (the
+  equilibrium headings of the heading residual, the operating speed of the pull balance);
+* `bisect`: refine one bracket with `optimistix.Bisection` (to machine precision by
+  default; the tolerance is the caller's);
+* `newton`: Newton's method with `optimistix.Newton` for scalar or vector problems, with
+  the residual checked by the caller (optimistix terminates on the change of the iterate):
+  the polish of a bracketed root, the continuation corrector, the straight-behind
+  equilibrium of the design module and the shooting of periodic orbits (least squares when
+  the Jacobian is singular, ``well_posed=False``).
+
+All three are pure and jittable; under `jax.vmap` every member of a batch takes as many
+steps as the slowest.
+"""
+
+from __future__ import annotations
+
+import jax.numpy as jnp
+import lineax as lx
+import optimistix as optx
+from jaxtyping import Array, Bool, Int
+
+
+def brackets(
+    values, max_roots: int
+) -> tuple[Int[Array, " k"], Bool[Array, " k"], Bool[Array, " k"], Int[Array, ""]]:
+    """Sign changes of a sampled function ``values`` (n,): interval indices i with
+    values[i] == 0 (an exact root at node i) or values[i]·values[i+1] < 0, in ascending
+    order. Returns ``(index, found, exact, count)`` with ``max_roots`` slots: slots beyond
+    ``count`` are not ``found`` and repeat the first index (so that their refinement stays
+    finite); ``count`` > ``max_roots`` means roots were dropped."""
+    exact = values[:-1] == 0
+    change = exact | (values[:-1] * values[1:] < 0)
+    count = jnp.sum(change)
+    idx = jnp.nonzero(change, size=max_roots, fill_value=0)[0]
+    found = jnp.arange(max_roots) < count
+    idx = jnp.where(found, idx, idx[0])
+    return idx, found, exact[idx], count
+
+
+def bisect(fn, lo, hi, args=None, *, atol: float = 0.0, rtol: float = 0.0, max_steps: int = 256):
+    """Root of ``fn(x, args)`` in the bracket [lo, hi] (a sign change) by
+    `optimistix.Bisection`; returns ``(x, successful)``. The default tolerances (0) run to
+    the floating-point limit of the bracket and stop at ``max_steps`` (then ``successful``
+    is False but ``x`` is the converged midpoint): pass the accuracy you need."""
+    solver = optx.Bisection(rtol=rtol, atol=atol, flip="detect")
+    sol = optx.root_find(
+        fn,
+        solver,
+        0.5 * (lo + hi),
+        args,
+        options=dict(lower=lo, upper=hi),
+        max_steps=max_steps,
+        throw=False,
+    )
+    return sol.value, sol.result == optx.RESULTS.successful
+
+
+def newton(
+    fn,
+    x0,
+    args=None,
+    *,
+    rtol: float = 1e-12,
+    atol: float = 1e-12,
+    max_steps: int = 256,
+    lower=None,
+    upper=None,
+    well_posed: bool | None = True,
+):
+    """Newton iteration on ``fn(x, args) = 0`` from ``x0`` by `optimistix.Newton`; returns
+    ``(x, successful)``. ``lower``/``upper`` clip the iterates of a scalar problem;
+    ``well_posed=False`` solves each step in the least-squares sense (a singular Jacobian).
+    Newton stops on a small change of the iterate: check the residual where it matters.
+    ``rtol = atol = 0`` runs exactly ``max_steps`` steps (a polish of a bracketed root)."""
+    solver = optx.Newton(
+        rtol=rtol, atol=atol, linear_solver=lx.AutoLinearSolver(well_posed=well_posed)
+    )
+    options = {} if lower is None else dict(lower=lower, upper=upper)
+    sol = optx.root_find(fn, solver, x0, args, options=options, max_steps=max_steps, throw=False)
+    return sol.value, sol.result == optx.RESULTS.successful

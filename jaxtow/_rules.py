@@ -1,0 +1,168 @@
+"""Validation rules: one declaration per parameter gives both the eager and the traced check.
+
+A `Rule` is a predicate with the words of its requirement. Declared once on a field,
+
+    EA: Float[Array, ""] = rule_field(rule=POSITIVE)
+
+it yields
+
+* the **eager** check: when the value is concrete (construction, `with_parameters` on
+  numbers, the grids of a sweep before anything runs), a `ValueError` that names the
+  parameter, says what was expected and what was given;
+* the **traced** check: a ``(predicate, message)`` pair with the same words, which `guard`
+  attaches to an output with `equinox.error_if`, so that invalid values arriving as tracers
+  raise under `jax.jit` and `jax.vmap`.
+
+Every parameter class derives from `Checked`: its ``__check_init__`` runs the eager rule of
+every declared field, and its ``checks()`` returns the traced rules of its own fields and of
+every `Checked` module inside it (a `TowModel` covers its vessel, towline and external force,
+down to the spectrum of an irregular sea). `rule_of` finds the rule of a field by name, for
+the eager check of a sweep grid. Changing a rule changes both checks.
+
+Sweeps do not use the traced checks per point (one bad point would abort the batch); they
+validate the whole grid eagerly before running (see `jaxtow.sweep`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+import equinox as eqx
+import jax.numpy as jnp
+import numpy as np
+from jax.core import Tracer
+
+
+def is_concrete(x) -> bool:
+    """True if ``x`` holds concrete values (not a JAX tracer)."""
+    return not isinstance(x, Tracer)
+
+
+@dataclasses.dataclass(eq=False)
+class Rule:
+    """A validation rule: ``ok(xp, x)`` is the elementwise predicate written once for both
+    array namespaces (``xp`` is `numpy` eagerly, `jax.numpy` when traced); ``requirement``
+    completes the sentence "parameter 'name' ..."."""
+
+    requirement: str
+    ok: Callable[[Any, Any], Any]
+
+    def check(self, name: str, x) -> None:
+        """Eager: raise a `ValueError` naming ``name`` if a concrete ``x`` breaks the rule."""
+        if not is_concrete(x):
+            return
+        try:
+            v = np.asarray(x, dtype=float)
+        except (TypeError, ValueError):
+            raise ValueError(f"parameter {name!r} must be a number, got {x!r}") from None
+        with np.errstate(invalid="ignore"):
+            good = np.all(self.ok(np, v))
+        if not good:
+            raise ValueError(f"parameter {name!r} {self.requirement}, got {v!r}")
+
+    def traced(self, name: str, x) -> tuple:
+        """Traced: the ``(predicate, message)`` pair for `guard` (predicate True = bad)."""
+        return jnp.any(~self.ok(jnp, jnp.asarray(x))), f"parameter {name!r} {self.requirement}"
+
+
+FINITE = Rule("must be finite", lambda xp, x: xp.isfinite(x))
+POSITIVE = Rule("must be > 0 and finite", lambda xp, x: xp.isfinite(x) & (x > 0))
+NONNEGATIVE = Rule("must be >= 0 and finite", lambda xp, x: xp.isfinite(x) & (x >= 0))
+
+
+def in_range(lo: float, hi: float) -> Rule:
+    """The rule lo <= x <= hi (finite)."""
+    return Rule(f"must lie in [{lo}, {hi}]", lambda xp, x: xp.isfinite(x) & (x >= lo) & (x <= hi))
+
+
+def at_least(lo: float) -> Rule:
+    """The rule x >= lo (finite)."""
+    return Rule(f"must be >= {lo} and finite", lambda xp, x: xp.isfinite(x) & (x >= lo))
+
+
+def _asarray(x):
+    return jnp.asarray(x)
+
+
+def _rule_field(*, rule: Rule, **kwargs):
+    """An array field (converted with `jnp.asarray`) validated by ``rule``."""
+    kwargs.setdefault("converter", _asarray)
+    metadata = dict(kwargs.pop("metadata", {}), rule=rule)
+    return eqx.field(metadata=metadata, **kwargs)
+
+
+if TYPE_CHECKING:  # a field specifier to type checkers (dataclass_transform), like eqx.field
+    rule_field = eqx.field
+else:
+    rule_field = _rule_field
+
+
+def _rules(obj) -> list:
+    return [(f.name, f.metadata["rule"]) for f in dataclasses.fields(obj) if "rule" in f.metadata]
+
+
+def rule_of(obj, name: str) -> Rule | None:
+    """The rule declared on field ``name`` of module ``obj`` (None if it has none)."""
+    return dict(_rules(obj)).get(name)
+
+
+def _children(value):
+    if isinstance(value, Checked):
+        return [value]
+    if isinstance(value, (tuple, list)):
+        return [c for v in value for c in _children(v)]
+    return []
+
+
+class Checked(eqx.Module):
+    """Base of every parameter class: the eager checks at construction and the traced
+    ``checks()``, both from the rules declared on its fields (`rule_field`)."""
+
+    def __check_init__(self):
+        for name, rule in _rules(self):
+            if getattr(self, name) is not None:  # an optional field left out
+                rule.check(name, getattr(self, name))
+
+    def checks(self) -> list:
+        """Traced ``(predicate, message)`` checks of this module's fields and of every
+        `Checked` module inside it; apply them to an output with `guard`."""
+        out = [
+            rule.traced(name, getattr(self, name))
+            for name, rule in _rules(self)
+            if getattr(self, name) is not None
+        ]
+        for f in dataclasses.fields(self):
+            for child in _children(getattr(self, f.name, None)):
+                out += child.checks()
+        return out
+
+
+# eager checks of function arguments, from the same rules
+def check_finite(name: str, x) -> None:
+    FINITE.check(name, x)
+
+
+def check_positive(name: str, x) -> None:
+    POSITIVE.check(name, x)
+
+
+def check_nonnegative(name: str, x) -> None:
+    NONNEGATIVE.check(name, x)
+
+
+def check_range(name: str, x, lo: float, hi: float) -> None:
+    in_range(lo, hi).check(name, x)
+
+
+def guard(tree, checks):
+    """Attach run-time checks to every leaf of ``tree`` (an output pytree).
+
+    `eqx.error_if` is applied to the whole output, so the check cannot be removed as dead
+    code while any output is used, and it raises under jit and vmap with the message that
+    names the parameter.
+    """
+    for pred, msg in checks:
+        tree = eqx.error_if(tree, pred, msg)
+    return tree

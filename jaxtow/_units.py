@@ -1,0 +1,77 @@
+"""Non-dimensionalisation of the tow model (thesis eqs 2.1, 6.14-6.16, Table 3.7).
+
+Hong et al. convention (docs/model.md section 1): velocities by U_tug, yaw rate by U_tug/L,
+lengths by L, time by L/U_tug, masses by ½ρTL², yaw inertia by ½ρTL⁴, forces by ½ρTLU²,
+moments by ½ρTL²U². SI units and radians everywhere inside jaxtow; degrees, knots and
+periods only at the user boundary (CLI, plots).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import jax.numpy as jnp
+
+G = 9.80665  # m/s², standard gravity
+RHO_SEA = 1025.0  # kg/m³, sea-water density used throughout the thesis
+
+
+@dataclasses.dataclass(frozen=True)
+class Scales:
+    """Reference scales of the tow model.
+
+    length: L [m]; draft: T [m]; u_tug: U_tug [m/s]; rho: water density [kg/m³].
+    """
+
+    length: float
+    draft: float
+    u_tug: float
+    rho: float = RHO_SEA
+
+    def __post_init__(self):
+        for name in ("length", "draft", "u_tug", "rho"):
+            val = getattr(self, name)
+            if not (math.isfinite(val) and val > 0):
+                raise ValueError(f"parameter {name!r} must be finite and > 0, got {val!r}")
+
+    @property
+    def mass(self) -> float:
+        """½ρTL² [kg]."""
+        return 0.5 * self.rho * self.draft * self.length**2
+
+    @property
+    def inertia(self) -> float:
+        """½ρTL⁴ [kg m²]."""
+        return 0.5 * self.rho * self.draft * self.length**4
+
+    @property
+    def force(self) -> float:
+        """½ρTLU² [N] (thesis eqs 6.14, 6.15)."""
+        return 0.5 * self.rho * self.draft * self.length * self.u_tug**2
+
+    @property
+    def moment(self) -> float:
+        """½ρTL²U² [N m] (thesis eq. 6.16)."""
+        return self.force * self.length
+
+    def nondimensional(self, load):
+        """(X', Y', N') of a body-axis load (F_x [N], F_y [N], N_z [N m]): forces by ½ρTLU²,
+        the moment by ½ρTL²U² (thesis eqs 6.14-6.16). Every dimensional force model of the
+        tow goes through this one conversion."""
+        return jnp.stack([load[0] / self.force, load[1] / self.force, load[2] / self.moment])
+
+    @property
+    def time(self) -> float:
+        """L/U_tug [s]."""
+        return self.length / self.u_tug
+
+    @property
+    def froude(self) -> float:
+        """Froude number U_tug/sqrt(gL) (the wave-drift methods are valid for Fn < 0.15)."""
+        return froude_number(self.u_tug, self.length)
+
+
+def froude_number(u, length):
+    """Fn = U / sqrt(g L)."""
+    return u / (G * length) ** 0.5

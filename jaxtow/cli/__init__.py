@@ -1,0 +1,58 @@
+"""The ``jaxtow`` command line.
+
+Subcommands:
+
+* ``jaxtow calm --out DIR``: the without-waves stability study of thesis section 6.1 for
+  Barge 2a and 2b (equilibria vs x_p', max Re λ vs l0', a (x_p', l0') stability map, and
+  time-domain runs from the thesis's initial condition, figs 6.5-6.7): PNG figures,
+  NetCDF datasets and a JSON summary in DIR.
+* ``jaxtow equilibria``: the equilibria of one configuration and their eigenvalues.
+* ``jaxtow map``: any sweep over named parameters, saved as NetCDF (and a figure for 1-D
+  and 2-D sweeps).
+* ``jaxtow drift``: the waterline drift methods compared (thesis chapters 4-5, figs
+  4.3-4.6, 5.6-5.7) for Barge 1, Barge 2 or a waterline file, with relative MSE per zone.
+* ``jaxtow bifurcation``: equilibrium branches in one parameter with pitchfork, fold and
+  Hopf points (first Lyapunov coefficient) and limit cycles (path width, Floquet multipliers).
+* ``jaxtow bem``: panel-method (Capytaine, optional extra) RAOs and far-/near-field drift
+  QTF databases for Barge 1, Barge 2 or a mesh file, and the mesh-convergence study.
+* ``jaxtow simulate``: time-domain runs (time traces, phase portraits, force history,
+  fishtailing metrics).
+
+Run ``jaxtow SUBCOMMAND --help`` for the options.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from . import bem, bifurcation, calm, drift, equilibria, map, report, resistance, simulate
+
+#: One module per subcommand, each with ``add_parser(sub)``; the order of ``jaxtow --help``.
+SUBCOMMANDS = (calm, equilibria, simulate, map, drift, bifurcation, resistance, report, bem)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="jaxtow",
+        description="Towing stability of a barge on an elastic towline (JAX). "
+        "Non-dimensional inputs use the thesis scales: lengths by L, stiffness by 0.5*rho*T*L*U_tug^2.",
+    )
+    sub = p.add_subparsers(dest="command", required=True)
+    for module in SUBCOMMANDS:
+        module.add_parser(sub)
+    return p
+
+
+def main(argv=None) -> int:
+    """Entry point of the ``jaxtow`` command."""
+    args = build_parser().parse_args(argv)
+    import matplotlib
+
+    matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
+    args.func(args)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

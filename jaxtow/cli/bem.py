@@ -1,0 +1,208 @@
+"""``jaxtow bem CONFIG``: panel-method (Capytaine) drift databases for Barge 1 / Barge 2 or a
+user hull (thesis sections 2.3.1, 4, 5, appendix B), from a small TOML config.
+
+Writes to ``--out``: ``bem.nc`` (RAOs, hydrodynamic coefficients, far-/near-field drift,
+near-field parts I-IV, sectional moments), ``qtf_far_field.nc`` and ``qtf_near_field.nc``
+(jaxtow QTF databases with the mesh, solver and versions in their attributes, for
+``jaxtow resistance`` / ``jaxtow report waves --qtf`` / `jaxtow.io.load_qtf`), figures of the
+RAOs (B.2, B.3), the QTFs (4.3c, 4.4c, 4.5a, B.4) and the near-field parts (2.11), and
+``summary.json``. ``--convergence 2,1.5,1`` runs the mesh-convergence study (B.1) instead.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from .._units import RHO_SEA, G
+from ._config import config_dispatch, read_config as _read_config
+
+BUILTIN = {"barge1": "bem_barge1.toml", "barge2": "bem_barge2.toml"}
+_KEYS = {
+    "hull": {"kind", "length", "breadth", "draft", "panel_size", "path", "grading"},
+    "mass": {"cog_z", "roll_damping", "radii"},
+    "waves": {"omega", "beta_deg", "water_depth"},
+}
+
+
+def read_config(config) -> dict:
+    """The parsed config: a built-in name (barge1, barge2), a TOML path, or a dict."""
+    return _read_config(config, BUILTIN)
+
+
+def _grid(spec, name):
+    if not (isinstance(spec, list) and len(spec) == 3 and int(spec[2]) >= 1):
+        raise ValueError(f"config [waves] {name}: expected [start, stop, count], got {spec!r}")
+    return np.linspace(float(spec[0]), float(spec[1]), int(spec[2]))
+
+
+def build(cfg: dict, panel_size: float | None = None):
+    """(mesh builder panel_size -> HullMesh, default panel size, omega, beta [rad], bem_drift keywords)."""
+    from .. import bem
+
+    for sec, allowed in _KEYS.items():
+        extra = set(cfg.get(sec, {})) - allowed
+        if extra:
+            raise ValueError(
+                f"config [{sec}]: unknown key(s) {sorted(extra)}; allowed: {sorted(allowed)}"
+            )
+    extra = set(cfg) - set(_KEYS)
+    if extra:
+        raise ValueError(f"config: unknown section(s) {sorted(extra)}; allowed: {sorted(_KEYS)}")
+    h, m, w = cfg.get("hull", {}), cfg.get("mass", {}), cfg.get("waves", {})
+    kind = h.get("kind", "box")
+    size = float(panel_size if panel_size is not None else h.get("panel_size", 1.0))
+    grading = float(h.get("grading", 0.0))
+    if kind == "box":
+
+        def builder(p):
+            return bem.raked_barge_mesh(
+                float(h.get("length", 76.2)),
+                float(h.get("breadth", 24.4)),
+                float(h.get("draft", 5.0)),
+                0.0,
+                panel_size=p,
+                grading=grading,
+                name="barge1_box",
+            )
+    elif kind == "barge2":
+
+        def builder(p):
+            return bem.barge2_mesh(h.get("draft"), panel_size=p, grading=grading)
+    elif kind == "file":
+        if "path" not in h:
+            raise ValueError("config [hull] kind = 'file' needs path = 'mesh file'")
+
+        def builder(p):
+            return bem.read_mesh(h["path"], panel_size=p)
+    else:
+        raise ValueError(f"config [hull] kind: 'box', 'barge2' or 'file', got {kind!r}")
+    omega = _grid(w.get("omega", [0.05, 2.1, 42]), "omega")
+    beta = np.radians(_grid(w.get("beta_deg", [0, 90, 7]), "beta_deg"))
+    depth = w.get("water_depth", "inf")
+    depth = math.inf if str(depth).lower() in ("inf", "infinity") else float(depth)
+    kw = dict(
+        cog_z=m.get("cog_z"),
+        roll_damping=m.get("roll_damping"),
+        radii=m.get("radii"),
+        water_depth=depth,
+    )
+    return builder, size, omega, beta, kw
+
+
+def cmd_bem(args):
+    from .. import bem
+
+    try:
+        bem.require_capytaine()
+    except ImportError as e:
+        raise SystemExit(f"jaxtow bem: {e}") from None
+    try:
+        builder, size, omega, beta, kw = build(read_config(args.config), args.panel_size)
+        if args.n_omega:
+            omega = np.linspace(omega[0], omega[-1], args.n_omega)
+    except (ValueError, KeyError, OSError) as e:
+        raise SystemExit(f"jaxtow bem: {e}") from None
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    cache = Path(args.cache) if args.cache else out / "cache"
+    from ..plotting.bem import plot_bem_qtf, plot_mesh_convergence, plot_nearfield_parts, plot_rao
+
+    if args.convergence:
+        sizes = [float(s) for s in args.convergence.split(",")]
+        runs, summary = bem.mesh_convergence(
+            builder, sizes, omega, beta, cache_dir=cache, progress=not args.quiet, **kw
+        )
+        summary.to_netcdf(out / "convergence.nc")
+        plot_mesh_convergence(summary, runs).savefig(out / "fig_B1_convergence.png", dpi=120)
+        print(
+            summary.near_vs_far.to_dataframe().unstack("zone").to_string()
+            if hasattr(summary, "to_dataframe")
+            else summary
+        )
+        print(f"wrote convergence.nc and fig_B1_convergence.png to {out}")
+        return
+    mesh = builder(size)
+    print(
+        f"{mesh.name}: {mesh.n_panels} hull panels + {len(mesh.lid_faces)} lid panels, {omega.size} frequencies "
+        f"x {beta.size} headings"
+    )
+    ds = bem.bem_drift(mesh, omega, beta, cache_dir=cache, progress=not args.quiet, **kw)
+    ds.to_netcdf(out / "bem.nc")
+    bad = ds.omega.values[~ds.resolved.values]
+    if bad.size:
+        print(
+            f"warning: {bad.size} frequencies from {bad.min():.2f} rad/s have fewer than "
+            f"{bem.solve.MIN_PANELS_PER_WAVELENGTH:g} panels per wavelength (dataset variable 'resolved'); "
+            "use a smaller --panel-size"
+        )
+    from ..io import save_qtf
+
+    sym = bool(np.isclose(float(beta[0]), 0.0))
+    summary = {
+        "mesh": mesh.name,
+        "n_panels": mesh.n_panels,
+        "panel_size_m": mesh.panel_size,
+        "capytaine_version": ds.attrs["capytaine_version"],
+        "assumptions": json.loads(ds.attrs["assumptions"]),
+    }
+    for method in ("far_field", "near_field"):
+        q = bem.qtf_from_bem(ds, method, symmetric=sym)
+        save_qtf(q, out / f"qtf_{method}.nc", attrs=bem.qtf_attrs(ds, method))
+    L = float(np.ptp(mesh.vertices[:, 0]))
+    B = float(np.ptp(mesh.vertices[:, 1]))
+    head = ds.sel(beta=float(beta[0]))
+    summary["short_wave_surge_head_seas"] = {
+        m: float(head[m].sel(component="fx").isel(omega=-1)) / (RHO_SEA * G * B)
+        for m in ("far_field", "near_field")
+    }
+    from ..drift._compare import relative_mse_by_zone
+
+    for c in ("fx", "fy"):
+        summary[f"near_vs_far_{c}"] = relative_mse_by_zone(
+            ds.near_field.sel(component=c).values,
+            ds.far_field.sel(component=c).values,
+            np.repeat(ds.omega.values[:, None], beta.size, 1),
+            L,
+        )
+    (out / "summary.json").write_text(json.dumps(summary, indent=2))
+    bds = [float(np.degrees(b)) for b in beta[:: max(1, beta.size // 3)]][:3]
+    for bd in sorted(set([bds[0], 15.0 if np.any(np.isclose(np.degrees(beta), 15)) else bds[-1]])):
+        plot_rao(ds, bd).savefig(out / f"fig_rao_beta{bd:g}.png", dpi=110)
+    plot_bem_qtf(ds, bds).savefig(out / "fig_qtf.png", dpi=110)
+    plot_nearfield_parts(ds, bds[min(1, len(bds) - 1)]).savefig(
+        out / "fig_nearfield_parts.png", dpi=110
+    )
+    print(
+        json.dumps(
+            {
+                k: summary[k]
+                for k in ("short_wave_surge_head_seas", "near_vs_far_fx", "near_vs_far_fy")
+            },
+            indent=1,
+        )
+    )
+    print(f"wrote bem.nc, qtf_far_field.nc, qtf_near_field.nc, figures and summary.json to {out}")
+
+
+def add_parser(sub):
+    r = sub.add_parser(
+        "bem", help="panel-method drift database with Capytaine (needs: pip install 'jaxtow[bem]')"
+    )
+    r.add_argument(
+        "config",
+        help=f"TOML config, or a built-in one: {', '.join(BUILTIN)} (print with --show-config)",
+    )
+    r.add_argument("--out", default="bem_out", help="output folder (default bem_out)")
+    r.add_argument("--panel-size", type=float, default=None, help="override [hull] panel_size [m]")
+    r.add_argument("--n-omega", type=int, default=None, help="override the number of frequencies")
+    r.add_argument("--cache", default=None, help="per-frequency cache folder (default OUT/cache)")
+    r.add_argument(
+        "--convergence", default=None, help="mesh study instead: comma-separated panel sizes [m]"
+    )
+    r.add_argument("--quiet", action="store_true", help="no progress bar")
+    r.add_argument("--show-config", action="store_true", help="print the config and exit")
+    r.set_defaults(func=config_dispatch("bem", BUILTIN, lambda a: cmd_bem(a)))

@@ -1,0 +1,68 @@
+"""``jaxtow map``: any sweep over named parameters, to NetCDF and a figure."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from ._common import _common, _grid, _model, _parse_sets
+
+
+def cmd_map(args):
+    import jaxtow as jt
+
+    from ..io import save_dataset
+    from ..plotting.calm import plot_equilibria_vs, plot_max_real_vs, plot_stability_map, save
+
+    if not args.param:
+        raise SystemExit("error: give at least one --param NAME LO HI N")
+    model = _model(args, overrides=_parse_sets(args.set))
+    grid = {}
+    for name, lo, hi, n in args.param:
+        grid[name] = _grid((lo, hi, n), f"param {name}")
+    try:
+        ds = jt.sweep(
+            model,
+            grid,
+            method=args.method,
+            progress=not args.quiet,
+            chunk_size=args.chunk_size,
+            max_roots=args.max_roots,
+        )
+    except ValueError as e:
+        raise SystemExit(f"error: {e}") from None
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    stem = args.vessel + "_" + "_".join(grid)
+    save_dataset(ds, out / f"{stem}.nc")
+    names = list(grid)
+    if len(names) == 1:
+        save(plot_equilibria_vs(ds, names[0]), out / f"{stem}_equilibria.png")
+        save(plot_max_real_vs(ds, names[0]), out / f"{stem}_max_real.png")
+    elif len(names) == 2:
+        save(plot_stability_map(ds, names[0], names[1]), out / f"{stem}_map.png")
+    n_unstable = int(((ds["stability"] > 0) & ds["valid"]).sum())
+    print(f"{ds.sizes}: {n_unstable} unstable equilibria; wrote {out / (stem + '.nc')}")
+
+
+def add_parser(sub):
+    m = sub.add_parser("map", help="sweep any parameters; NetCDF + figure")
+    m.add_argument("--vessel", default="barge_2a", help="vessel preset (barge_2a, barge_2b)")
+    m.add_argument(
+        "--param",
+        nargs=4,
+        action="append",
+        metavar=("NAME", "LO", "HI", "N"),
+        help="swept parameter and its grid, e.g. --param l0 0.2 2.5 100 (repeatable)",
+    )
+    m.add_argument(
+        "--method",
+        choices=("numerical", "analytic"),
+        default="numerical",
+        help="equilibrium solver (analytic: calm water, elastic line only)",
+    )
+    m.add_argument("--max-roots", type=int, default=4, help="equilibrium slots per point")
+    m.add_argument("--out", default="results", help="output folder")
+    m.add_argument("--chunk-size", type=int, default=16384, help="points per vmapped chunk")
+    m.add_argument("--quiet", action="store_true", help="no progress bar")
+    _common(m)
+    m.set_defaults(func=cmd_map)

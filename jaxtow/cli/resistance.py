@@ -1,0 +1,354 @@
+"""``jaxtow resistance CONFIG``: tow resistance budget, required pull and operating speed
+(thesis sections 7.1-7.2, figs 2.1, 7.2-7.4) from a small TOML config."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from ._config import config_dispatch, read_config as _read_config
+
+NM = 1852.0  # m
+TONNE_FORCE = 9.80665e3  # N
+BUILTIN = {"barge2": "resistance_barge2.toml"}
+_TOW_KEYS = {"vessel", "wave_drift", "wind_table", "wind_height", "heading_deg"}
+_TUG_KEYS = {
+    "bollard_pull_t",
+    "free_speed",
+    "efficiency",
+    "resistance_coefficient",
+    "speeds",
+    "pulls_t",
+}
+_SEA_KEYS = {
+    "name",
+    "hs",
+    "tp",
+    "gamma",
+    "wind_speed",
+    "current_speed",
+    "wave_angle_deg",
+    "wind_angle_deg",
+    "current_angle_deg",
+}
+
+
+def read_config(config) -> dict:
+    """The parsed config: a built-in name (barge2), a TOML path, or a dict."""
+    return _read_config(config, BUILTIN)
+
+
+def _unknown(section: str, got: dict, allowed: set):
+    extra = set(got) - allowed
+    if extra:
+        raise ValueError(
+            f"config [{section}]: unknown key(s) {sorted(extra)}; allowed: {sorted(allowed)}"
+        )
+
+
+def _wind_table(path):
+    from ..resistance._flow import CoefficientTable
+
+    t = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
+    if t.shape[1] != 4:
+        raise ValueError(f"wind_table {path!r}: expected 4 columns angle_deg, cx, cy, cn")
+    return CoefficientTable.symmetric(
+        t[:, 0], t[:, 1], t[:, 2], t[:, 3], label=f"wind table {path}"
+    )
+
+
+def _qtf(path):
+    from ..io import load_qtf, read_wamit_drift
+
+    p = Path(path)
+    return load_qtf(p) if p.suffix in (".nc", ".csv") else read_wamit_drift(p)
+
+
+def build(cfg: dict):
+    """(tow, tug, sea states, heading [rad], route length [m] or None) from a parsed config."""
+    from .. import presets, resistance as R
+    from ..drift import METHODS
+
+    for key in ("tow", "tug", "sea_state"):
+        if key not in cfg:
+            raise ValueError(
+                f"config: missing section [{key}]"
+                if key != "sea_state"
+                else "config: needs at least one [[sea_state]]"
+            )
+    tow_c, tug_c = cfg["tow"], cfg["tug"]
+    _unknown("tow", tow_c, _TOW_KEYS)
+    _unknown("tug", tug_c, _TUG_KEYS)
+    vessel = tow_c.get("vessel", "barge_2a")
+    if vessel not in ("barge_2a", "barge_2b"):
+        raise ValueError(
+            f"config [tow] vessel: built-in vessels are 'barge_2a' and 'barge_2b', got {vessel!r}"
+        )
+    drift = tow_c.get("wave_drift", "kashiwagi")
+    kw = dict(wind_height=tow_c.get("wind_height"))
+    if drift in METHODS:
+        kw["method"] = drift
+    else:
+        kw["qtf"] = _qtf(drift)
+    if "wind_table" in tow_c:
+        kw["wind_table"] = _wind_table(tow_c["wind_table"])
+    tow = presets.barge2_resistance(vessel.split("_")[1], **kw)
+    eff = dict(
+        efficiency=tug_c.get("efficiency", 1.0),
+        resistance_coefficient=tug_c.get("resistance_coefficient", 0.0),
+    )
+    if "speeds" in tug_c or "pulls_t" in tug_c:
+        tug = R.Tug.from_table(
+            tug_c["speeds"], np.asarray(tug_c["pulls_t"], float) * TONNE_FORCE, **eff
+        )
+    else:
+        if "bollard_pull_t" not in tug_c or "free_speed" not in tug_c:
+            raise ValueError(
+                "config [tug]: give bollard_pull_t and free_speed, or speeds and pulls_t"
+            )
+        tug = R.Tug(
+            bollard_pull=float(tug_c["bollard_pull_t"]) * TONNE_FORCE,
+            free_speed=tug_c["free_speed"],
+            **eff,
+        )
+    seas = []
+    for i, s in enumerate(cfg["sea_state"]):
+        _unknown(f"sea_state {i + 1}", s, _SEA_KEYS)
+        kw = {k: s[k] for k in ("hs", "tp", "gamma", "wind_speed", "current_speed") if k in s}
+        for k in ("wave_angle", "wind_angle", "current_angle"):
+            if f"{k}_deg" in s:
+                kw[k] = math.radians(s[f"{k}_deg"])
+        if "hs" not in kw or "tp" not in kw:
+            raise ValueError(f"config [[sea_state]] {i + 1}: hs and tp are required")
+        seas.append(R.SeaState(**kw, name=s.get("name", f"sea state {i + 1}")))
+    route = cfg.get("route", {})
+    length = route["length_nm"] * NM if "length_nm" in route else route.get("length_m")
+    return tow, tug, seas, math.radians(tow_c.get("heading_deg", 0.0)), length
+
+
+def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
+    """Everything the table prints for one sea state (SI)."""
+    import jax
+    import jax.numpy as jnp
+
+    from .. import resistance as R
+    from ..waves import physical_tp_range
+
+    req = R.required_pull(tow, sea, heading=heading, tug=tug)
+    out = dict(
+        sea_state=sea.name,
+        hs=float(sea.hs),
+        tp=float(sea.tp),
+        wind_speed=float(sea.wind_speed),
+        current_speed=float(sea.current_speed),
+        hold_resistance=dict(zip(R.COMPONENTS, map(float, req.budget.resistance))),
+        hold_towing_force=float(req.towing_force),
+        required_bollard_pull=float(req.bollard_pull),
+    )
+    if float(sea.hs) > 0:
+        lo, hi = (float(t) for t in physical_tp_range(float(sea.hs)))
+        tps = jnp.linspace(lo, hi, n_tp)
+        bp = jax.vmap(
+            lambda t: R.required_pull(tow, eqx_tp(sea, t), heading=heading, tug=tug).bollard_pull
+        )(tps)
+        k = int(jnp.argmax(bp))
+        out.update(
+            physical_tp_range=[lo, hi],
+            worst_tp=float(tps[k]),
+            worst_required_bollard_pull=float(bp[k]),
+        )
+    p = R.operating_speed(tow, tug, sea, heading=heading, throw=False)
+    msg = R.status_message(p, tug, tow)
+    names = ("successful", "cannot_hold", "no_crossing", "froude_too_high")
+    status = next(n for n in names if bool(p.result == getattr(R.RESULTS, n)))
+    out.update(status=status, message=msg)
+    if status in ("successful", "froude_too_high"):
+        out.update(
+            operating_speed=float(p.speed),
+            froude=float(p.froude),
+            pull=float(p.pull),
+            operating_resistance=dict(zip(R.COMPONENTS, map(float, p.budget.resistance))),
+        )
+        if route_length:
+            out["transit_time_h"] = float(p.transit_time(route_length)) / 3600.0
+    return out
+
+
+def eqx_tp(sea, tp):
+    import equinox as eqx
+
+    return eqx.tree_at(lambda s: s.tp, sea, tp)
+
+
+def format_table(rows: list, tug, route_length) -> str:
+    """The readable table of `jaxtow resistance`."""
+    head = (
+        f"tug: bollard pull {float(tug.bollard_pull) / TONNE_FORCE:.1f} t, efficiency {float(tug.efficiency):g}, "
+        f"top speed {float(tug.max_speed):g} m/s"
+        + (f"; route {route_length / NM:g} nm" if route_length else "")
+    )
+    cols = (
+        "sea state",
+        "Hs m",
+        "Tp s",
+        "wind m/s",
+        "hold kN",
+        "req. BP t",
+        "worst BP t @Tp s",
+        "U_op m/s (kn)",
+        "Fn",
+        "transit h",
+        "% current/wind/waves/tug at U_op",
+    )
+    table, notes = [list(cols)], []
+    for r in rows:
+        worst = (
+            f"{r['worst_required_bollard_pull'] / TONNE_FORCE:.1f} @{r['worst_tp']:.1f}"
+            if "worst_tp" in r
+            else "-"
+        )
+        if "operating_speed" in r:
+            tot = sum(r["operating_resistance"].values())
+            shares = "/".join(f"{100 * v / tot:.0f}" for v in r["operating_resistance"].values())
+            speed = f"{r['operating_speed']:.2f} ({r['operating_speed'] / 0.514444:.1f})"
+            fn = f"{r['froude']:.3f}"
+            transit = f"{r['transit_time_h']:.0f}" if "transit_time_h" in r else "-"
+        else:
+            shares = speed = fn = transit = "-"
+        table.append(
+            [
+                r["sea_state"],
+                f"{r['hs']:g}",
+                f"{r['tp']:g}",
+                f"{r['wind_speed']:g}",
+                f"{r['hold_towing_force'] / 1e3:.1f}",
+                f"{r['required_bollard_pull'] / TONNE_FORCE:.1f}",
+                worst,
+                speed,
+                fn,
+                transit,
+                shares,
+            ]
+        )
+        if r["message"]:
+            notes.append(f"! {r['sea_state']}: {r['message']}")
+    width = [max(len(row[j]) for row in table) for j in range(len(cols))]
+    lines = [head, ""]
+    for k, row in enumerate(table):
+        lines.append(
+            "  ".join(c.rjust(w) if j else c.ljust(w) for j, (c, w) in enumerate(zip(row, width)))
+        )
+        if k == 0:
+            lines.append("-" * len(lines[-1]))
+    lines += [
+        "",
+        "hold: towing force to hold the tow at zero speed at the given Tp; req. BP: the tug's rated "
+        "bollard pull for it (/ efficiency); worst: over the physical Tp range (eq. 3.5)",
+    ] + notes
+    return "\n".join(lines)
+
+
+def cmd_resistance(args):
+    import jax.numpy as jnp
+
+    from .. import resistance as R
+    from ..io import resistance_dataset, save_dataset
+    from ..plotting.calm import save
+    from ..plotting.resistance import plot_budget_vs_speed, plot_budget_vs_tp, plot_operating_point
+    from ..waves import physical_tp_range
+
+    try:
+        tow, tug, seas, heading, route = build(read_config(args.config))
+    except (ValueError, KeyError, OSError) as e:
+        raise SystemExit(f"jaxtow resistance: {e}") from None
+    rows = [evaluate(tow, tug, s, heading, route) for s in seas]
+    print(format_table(rows, tug, route))
+    notes = [f"  - {k}: {n}" for k, n in tow.assumed]
+    print("\nresults depend on these estimates / ILLUSTRATIVE inputs:\n" + "\n".join(notes))
+    if not args.out:
+        return
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    tps = jnp.linspace(5.0, 16.0, 45)
+    speeds = jnp.linspace(0.0, min(3.5, float(tug.max_speed)), 15)
+    for i, sea in enumerate(seas):
+        grid_speeds = jnp.unique(jnp.concatenate([speeds, jnp.array([0.0, 2.0])]))
+        ds = resistance_dataset(
+            R.resistance_grid(tow, sea, grid_speeds, tps, heading=heading, tug=tug),
+            grid_speeds,
+            tps,
+            tow=tow,
+            sea=sea,
+        )
+        tag = sea.name.replace(" ", "_")
+        save_dataset(ds, out / f"resistance_{tag}.nc")
+        rng = (
+            tuple(float(t) for t in physical_tp_range(float(sea.hs))) if float(sea.hs) > 0 else None
+        )
+        save(
+            plot_budget_vs_tp(
+                ds,
+                speeds=[0.0] if i == 0 else [0.0, 2.0],
+                tp_range=rng,
+                title=f"{tow.name}: {sea.name}, Hs = {float(sea.hs):g} m, wind {float(sea.wind_speed):g} m/s "
+                "(figs 7.2/7.3)",
+            )[0],
+            out / f"budget_vs_tp_{tag}.png",
+        )
+        tp_fig = 7.0 if rng is None or rng[0] <= 7.0 <= rng[1] else float(sea.tp)
+        save(
+            plot_budget_vs_speed(
+                ds, tp_fig, title=f"{tow.name}: {sea.name}, Tp = {tp_fig:g} s (fig. 7.4)"
+            )[0],
+            out / f"budget_vs_speed_{tag}.png",
+        )
+        u = jnp.linspace(0.0, float(tug.max_speed), 80)
+        b = R.resistance_grid(tow, sea, u, jnp.array([float(sea.tp)]), heading=heading, tug=tug)
+        r = rows[i]
+        pt = (r["operating_speed"], r["pull"]) if "operating_speed" in r else None
+        save(
+            plot_operating_point(
+                np.asarray(u),
+                np.asarray(tug.pull(u)),
+                {"total": np.asarray(b.total[:, 0])},
+                pt,
+                title=f"{tow.name}: {sea.name} (fig. 2.1)",
+            ),
+            out / f"operating_point_{tag}.png",
+        )
+    summary = dict(
+        tow=tow.name,
+        assumed=dict(tow.assumed),
+        tug=dict(
+            bollard_pull=float(tug.bollard_pull),
+            free_speed=float(tug.max_speed),
+            efficiency=float(tug.efficiency),
+        ),
+        route_length_m=route,
+        sea_states=rows,
+    )
+    (out / "summary.json").write_text(json.dumps(summary, indent=2, default=float))
+    print(f"wrote figures, NetCDF datasets and summary.json to {out}")
+
+
+def add_parser(sub):
+    r = sub.add_parser(
+        "resistance", help="tow resistance, required pull and operating speed (thesis 7.1-7.2)"
+    )
+    r.add_argument(
+        "config",
+        help=f"TOML config file, or a built-in one: {', '.join(BUILTIN)} "
+        "(print it with --show-config)",
+    )
+    r.add_argument(
+        "--out", default=None, help="also write datasets, figures and summary.json to this folder"
+    )
+    r.add_argument(
+        "--show-config",
+        action="store_true",
+        help="print the config (e.g. the built-in one) and exit",
+    )
+    r.set_defaults(func=config_dispatch("resistance", BUILTIN, lambda a: cmd_resistance(a)))

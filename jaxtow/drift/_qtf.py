@@ -1,0 +1,158 @@
+"""Mean-drift QTF database over (ω, β) with a smooth, differentiable interpolant.
+
+Values are mean drift forces per unit wave amplitude squared, SI: Fx, Fy [N/m²] and
+Nz [N·m/m²], in body axes (x forward, y to port, Nz counter-clockwise seen from above),
+with the thesis's heading convention: β = 0 head seas, β measured counter-clockwise from
+the bow to the direction the waves come *from* (so head waves on a vessel at heading ψ
+have β = −ψ, docs/model.md section 4).
+
+Interpolant: tensor-product cubic Hermite, first in ω then in β, with node slopes from the
+three-point (quadratic-exact) finite-difference formula. It is C¹ in ω and β, and at an
+interior node its derivative equals the three-point difference of the table.
+Extrapolation rules (explicit):
+
+* ω → 0: a virtual node at ω = 0 with value 0 and slope 0 (drift vanishes in long waves);
+* ω > ω_max: the value at ω_max, held constant (short-wave asymptote); the slope at ω_max
+  is set to 0 so that the continuation is C¹ (the last tabulated frequency must lie in
+  the short-wave range);
+* β: a table covering the full circle [−π, π] (equal values at both ends) is periodic; a
+  partial table is clamped at its ends and `in_table` reports it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import equinox as eqx
+import jax.numpy as jnp
+import numpy as np
+from jaxtyping import Array, Float
+
+from .._interp import hermite_cell, hermite_local, node_slope
+
+_COMPONENTS = ("fx", "fy", "nz")
+
+
+class QTF(eqx.Module):
+    """Mean-drift QTF table: ``omega`` (nω,) rad/s ascending > 0, ``beta`` (nβ,) rad
+    ascending, ``values`` (3, nω, nβ) = (Fx, Fy, Nz) per ζa² [N/m², N·m/m²].
+
+    Build with ``QTF(omega=..., beta=..., fx=..., fy=..., nz=...)`` (each (nω, nβ)), or
+    `QTF.symmetric` from half a table of a port-starboard symmetric hull.
+    ``q(omega, beta)`` returns (Fx, Fy, Nz) per ζa²; it is differentiable in ω, β and in the
+    table values.
+    """
+
+    omega: Float[Array, " nw"]
+    beta: Float[Array, " nb"]
+    values: Float[Array, "3 nw nb"]
+    periodic: bool = eqx.field(static=True)
+
+    def __init__(self, *, omega, beta, fx, fy, nz):
+        w = np.asarray(omega, float)
+        b = np.asarray(beta, float)
+        vals = np.stack([np.asarray(v, float) for v in (fx, fy, nz)])
+        if w.ndim != 1 or w.size < 2 or not np.all(np.diff(w) > 0) or w[0] <= 0:
+            raise ValueError(
+                "parameter 'omega' must be a 1-D ascending grid of >= 2 positive frequencies"
+            )
+        if b.ndim != 1 or b.size < 2 or not np.all(np.diff(b) > 0):
+            raise ValueError("parameter 'beta' must be a 1-D ascending grid of >= 2 headings [rad]")
+        if vals.shape != (3, w.size, b.size):
+            raise ValueError(
+                f"fx, fy, nz must each have shape (len(omega), len(beta)) = {(w.size, b.size)}"
+            )
+        for name, v in zip(_COMPONENTS, vals):
+            if not np.all(np.isfinite(v)):
+                raise ValueError(f"parameter {name!r} must be finite")
+        full = bool(abs(b[0] + math.pi) < 1e-9 and abs(b[-1] - math.pi) < 1e-9)
+        scale = float(np.max(np.abs(vals))) if vals.size else 0.0
+        if full and not np.allclose(vals[..., 0], vals[..., -1], rtol=1e-12, atol=1e-12 * scale):
+            raise ValueError("a full-circle table must have equal values at beta = -pi and +pi")
+        self.omega, self.beta, self.values, self.periodic = (
+            jnp.asarray(w),
+            jnp.asarray(b),
+            jnp.asarray(vals),
+            full,
+        )
+
+    @classmethod
+    def symmetric(cls, *, omega, beta, fx, fy, nz):
+        """Complete a table given for 0 <= β <= βmax (radians) of a hull symmetric about its
+        centreline: Fx(−β) = Fx(β), Fy(−β) = −Fy(β), Nz(−β) = −Nz(β)."""
+        b = np.asarray(beta, float)
+        if b[0] != 0.0 or np.any(np.diff(b) <= 0):
+            raise ValueError("parameter 'beta' must ascend from 0 for symmetry completion")
+        fx, fy, nz = (np.asarray(v, float) for v in (fx, fy, nz))
+        if np.max(np.abs(fy[:, 0])) > 1e-9 * max(np.max(np.abs(fy)), 1e-300) or np.max(
+            np.abs(nz[:, 0])
+        ) > 1e-9 * max(np.max(np.abs(nz)), 1e-300):
+            raise ValueError("a symmetric hull has Fy = Nz = 0 in head seas (beta = 0)")
+        bb = np.concatenate([-b[:0:-1], b])
+        fxx = np.concatenate([fx[:, :0:-1], fx], axis=1)
+        fyy = np.concatenate([-fy[:, :0:-1], fy], axis=1)
+        nzz = np.concatenate([-nz[:, :0:-1], nz], axis=1)
+        fyy[:, b.size - 1] = 0.0
+        nzz[:, b.size - 1] = 0.0
+        if abs(b[-1] - math.pi) < 1e-9:  # following seas: also zero by symmetry
+            fyy[:, [0, -1]] = 0.0
+            nzz[:, [0, -1]] = 0.0
+        return cls(omega=np.asarray(omega, float), beta=bb, fx=fxx, fy=fyy, nz=nzz)
+
+    def in_table(self, beta):
+        """True where β lies inside the table's heading range (always for a full circle)."""
+        beta = jnp.asarray(beta)
+        if self.periodic:
+            return jnp.ones_like(beta, dtype=bool)
+        return (beta >= self.beta[0]) & (beta <= self.beta[-1])
+
+    def __call__(self, omega, beta) -> Float[Array, 3]:
+        """(Fx, Fy, Nz) per ζa² at one (ω, β); vmap for grids.
+
+        Only the table entries the point needs are touched: the four β columns around β
+        (for the two β-node slopes), each interpolated in ω on its bracketing interval
+        (`jaxtow._interp.hermite_local`). The result equals the tensor-product interpolant of the
+        module docstring built from the full slope tables."""
+        b, n = self.beta, self.beta.shape[0]
+        w = jnp.concatenate([jnp.zeros(1, self.omega.dtype), self.omega])
+        beta = jnp.asarray(beta)
+        if self.periodic:
+            beta = jnp.mod(beta + jnp.pi, 2 * jnp.pi) - jnp.pi
+        beta = jnp.clip(beta, b[0], b[-1])
+        j = jnp.clip(jnp.searchsorted(b, beta, side="right") - 1, 0, n - 2)
+
+        def neighbours(k):
+            if self.periodic:  # the end nodes (−π and π) are one point
+                end = (k == 0) | (k == n - 1)
+                return jnp.where(end, n - 2, k - 1), jnp.where(end, 1, k + 1)
+            return jnp.maximum(k - 1, 0), jnp.minimum(k + 1, n - 1)
+
+        jm, _ = neighbours(j)
+        _, jpp = neighbours(j + 1)
+        cols = jnp.stack([jm, j, j + 1, jpp])
+        sub = self.values[:, :, cols]  # (3, nw, 4): the four beta columns
+
+        def take(rows):  # table rows at node indices of w (node 0 is the virtual ω = 0 row)
+            r = sub[:, jnp.maximum(rows - 1, 0), :]  # (3, 4 rows, 4 cols)
+            return jnp.moveaxis(
+                jnp.where((rows > 0)[None, :, None], r, 0.0), 1, -1
+            )  # (3, 4 cols, 4 rows)
+
+        y4 = hermite_local(w, take, jnp.maximum(omega, 0.0))  # (3, 4)
+
+        def slope(k, ym, yk, yp):
+            km, kp = neighbours(k)
+            if self.periodic:
+                end = (k == 0) | (k == n - 1)
+                h0 = jnp.where(end, b[-1] - b[-2], b[k] - b[km])
+                h1 = jnp.where(end, b[1] - b[0], b[kp] - b[k])
+                return node_slope(h0, h1, ym, yk, yp)
+            h0 = jnp.where(k == 0, 1.0, b[k] - b[km])
+            h1 = jnp.where(k == n - 1, 1.0, b[kp] - b[k])
+            mid = node_slope(h0, h1, ym, yk, yp)
+            return jnp.where(k == 0, (yp - yk) / h1, jnp.where(k == n - 1, (yk - ym) / h0, mid))
+
+        m0 = slope(j, y4[:, 0], y4[:, 1], y4[:, 2])
+        m1 = slope(j + 1, y4[:, 1], y4[:, 2], y4[:, 3])
+        h = b[j + 1] - b[j]
+        return hermite_cell(y4[:, 1], y4[:, 2], m0, m1, h, (beta - b[j]) / h)

@@ -1,0 +1,334 @@
+"""Waterline geometry for the short-wave and empirical drift methods (thesis section 2.3, C.1).
+
+A `Waterline` is a closed polygon in body axes (x forward from midships, y to port, metres),
+ordered counter-clockwise seen from above, i.e. from the bow along the port side to the
+stern and back along starboard, as the thesis's input files describe it. Segment i runs
+from ``points[i]`` to ``points[i+1]`` (the last back to the first) and carries its own
+waterline flare η_i (angle of the hull surface from the vertical at the waterline, 0 for a
+wall-sided hull) and local draft d_i, which Liu et al.'s method uses.
+
+Geometry used by the methods, all differentiable in the coordinates:
+
+* inward unit normal n_i (into the hull) and length dl_i of each segment;
+* Faltinsen's waterline angle θ_i with n = (sin θ, cos θ) (thesis eqs 2.31, 2.60);
+* the illuminated part for a wave heading β: waves travel along k̂ = (−cos β, −sin β)
+  (β = 0 head seas, counter-clockwise from the bow; the convention of `jaxtow.drift`), and a
+  segment is lit where k̂·n > 0. For a convex waterline this is exact; shadowing of one part
+  of a non-convex waterline by another is not modelled, and ``convex`` says so.
+
+Builders: `box_waterline` (Barge 1) and `barge2_waterline` (Barge 2, plan-rectangular with
+raked bow and stern faces, geometry in `jaxtow.presets.barge2_rake`); `read_waterline` reads
+the thesis's half-waterline text format and mirrors it about the centreline.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import equinox as eqx
+import jax.numpy as jnp
+import numpy as np
+
+from .. import presets
+
+_TOL = 1e-9
+
+
+class Waterline(eqx.Module):
+    """A closed, counter-clockwise waterline polygon (build it with `waterline` or a builder;
+    those check it). Arrays are per vertex (``points``, shape (N, 2)) and per segment
+    (``flare`` [rad], ``local_draft`` [m], shape (N,))."""
+
+    points: jnp.ndarray
+    flare: jnp.ndarray
+    local_draft: jnp.ndarray
+    draft: jnp.ndarray
+    block_coefficient: jnp.ndarray
+    convex: bool = eqx.field(static=True, default=True)
+    name: str = eqx.field(static=True, default="")
+
+    @property
+    def n_segments(self) -> int:
+        return self.points.shape[0]
+
+    @property
+    def ends(self):
+        return jnp.roll(self.points, -1, axis=0)
+
+    @property
+    def lengths(self):
+        d = self.ends - self.points
+        return jnp.sqrt(jnp.sum(d**2, axis=-1))
+
+    @property
+    def midpoints(self):
+        return 0.5 * (self.points + self.ends)
+
+    @property
+    def normals(self):
+        """Inward unit normals (left of the counter-clockwise direction of travel)."""
+        d = self.ends - self.points
+        t = d / self.lengths[:, None]
+        return jnp.stack([-t[:, 1], t[:, 0]], axis=-1)
+
+    @property
+    def theta(self):
+        """Faltinsen's waterline angle θ per segment, n = (sin θ, cos θ) (thesis eq. 2.60)."""
+        n = self.normals
+        return jnp.arctan2(n[:, 0], n[:, 1])
+
+    @property
+    def length(self):
+        """Waterline length (x extent) [m]."""
+        x = self.points[:, 0]
+        return jnp.max(x) - jnp.min(x)
+
+    @property
+    def breadth(self):
+        """Waterline breadth (y extent) [m]."""
+        y = self.points[:, 1]
+        return jnp.max(y) - jnp.min(y)
+
+    @property
+    def area(self):
+        """Waterplane area [m²] (shoelace formula)."""
+        p, q = self.points, self.ends
+        return 0.5 * jnp.sum(p[:, 0] * q[:, 1] - q[:, 0] * p[:, 1])
+
+    def bow_length_to_95_breadth(self):
+        """L_b of the IMO / Söding–Shigunov formula (thesis eq. 2.65): the distance from the
+        foremost point of the waterline to the foremost station where the half-breadth |y|
+        reaches 95 % of its maximum (measured from the centreline y = 0). Zero for a
+        transom-like bow such as a box barge's."""
+        y0, y1 = jnp.abs(self.points[:, 1]), jnp.abs(self.ends[:, 1])
+        x0, x1 = self.points[:, 0], self.ends[:, 0]
+        h = 0.95 * jnp.max(y0)
+        at_vertex = jnp.where(y0 >= h, x0, -jnp.inf)
+        crosses = (y0 - h) * (y1 - h) < 0
+        s = (h - y0) / jnp.where(crosses, y1 - y0, 1.0)
+        at_cross = jnp.where(crosses, x0 + s * (x1 - x0), -jnp.inf)
+        x95 = jnp.maximum(jnp.max(at_vertex), jnp.max(at_cross))
+        return jnp.max(x0) - x95
+
+
+def _segments_intersect(p, q, r, s) -> bool:
+    """Proper or touching intersection of closed segments pq and rs (2-D, numpy)."""
+
+    def orient(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    def on_seg(a, b, c, eps):
+        return (
+            min(a[0], b[0]) - eps <= c[0] <= max(a[0], b[0]) + eps
+            and min(a[1], b[1]) - eps <= c[1] <= max(a[1], b[1]) + eps
+        )
+
+    scale = max(np.ptp([p[0], q[0], r[0], s[0]]), np.ptp([p[1], q[1], r[1], s[1]]), 1.0)
+    eps = _TOL * scale
+    d1, d2, d3, d4 = orient(r, s, p), orient(r, s, q), orient(p, q, r), orient(p, q, s)
+    e = eps * scale
+    if ((d1 > e and d2 < -e) or (d1 < -e and d2 > e)) and (
+        (d3 > e and d4 < -e) or (d3 < -e and d4 > e)
+    ):
+        return True
+    return (
+        (abs(d1) <= e and on_seg(r, s, p, eps))
+        or (abs(d2) <= e and on_seg(r, s, q, eps))
+        or (abs(d3) <= e and on_seg(p, q, r, eps))
+        or (abs(d4) <= e and on_seg(p, q, s, eps))
+    )
+
+
+def _per_segment(name, value, n):
+    a = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"parameter {name!r} must be finite, got {a!r}")
+    return a
+
+
+def waterline(
+    points, *, draft: float, flare=0.0, local_draft=None, block_coefficient=None, name: str = ""
+) -> Waterline:
+    """A checked `Waterline` from a closed polyline.
+
+    ``points``: (N+1, 2) vertices [m] with the last equal to the first (a closed polyline),
+    in either orientation (clockwise input is reversed). ``flare`` [rad] and ``local_draft``
+    [m] are per segment (scalars broadcast; local draft defaults to ``draft``).
+    ``block_coefficient`` defaults to the waterplane coefficient A_wp/(L·B), which equals C_B
+    for a wall-sided prismatic hull.
+
+    Raises ValueError naming the problem for a polyline that is not closed, has fewer than
+    three segments, repeated points, self-intersects, or has zero breadth or length.
+    """
+    p = np.asarray(points, dtype=float)
+    if p.ndim != 2 or p.shape[1] != 2 or p.shape[0] < 4:
+        raise ValueError(
+            f"parameter 'points' must have shape (N+1, 2) with N >= 3 segments, got {p.shape}"
+        )
+    if not np.all(np.isfinite(p)):
+        raise ValueError("parameter 'points' must be finite")
+    size = max(np.ptp(p[:, 0]), np.ptp(p[:, 1]))
+    if np.ptp(p[:, 1]) <= _TOL * max(size, 1.0):
+        raise ValueError("parameter 'points': the waterline has zero breadth")
+    if np.ptp(p[:, 0]) <= _TOL * max(size, 1.0):
+        raise ValueError("parameter 'points': the waterline has zero length")
+    if np.linalg.norm(p[-1] - p[0]) > _TOL * size:
+        raise ValueError(
+            f"parameter 'points': the waterline is not closed (first point {p[0]}, "
+            f"last point {p[-1]}; repeat the first point at the end)"
+        )
+    p = p[:-1]
+    n = p.shape[0]
+    seg = np.roll(p, -1, axis=0) - p
+    if np.any(np.linalg.norm(seg, axis=1) <= _TOL * size):
+        raise ValueError(
+            "parameter 'points': the waterline has repeated consecutive points (zero-length segment)"
+        )
+    for i in range(n):
+        for j in range(i + 1, n):
+            if j == i + 1 or (i == 0 and j == n - 1):
+                continue  # neighbours share a vertex
+            if _segments_intersect(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n]):
+                raise ValueError(
+                    f"parameter 'points': the waterline self-intersects (segments {i} and {j})"
+                )
+    fl = _per_segment("flare", flare, n)
+    if np.any(np.abs(fl) >= 0.5 * math.pi):
+        raise ValueError("parameter 'flare' must lie in (-pi/2, pi/2) rad")
+    ld = _per_segment("local_draft", draft if local_draft is None else local_draft, n)
+    if not (np.isfinite(draft) and draft > 0) or np.any(ld <= 0):
+        raise ValueError("parameters 'draft' and 'local_draft' must be > 0")
+    area2 = np.sum(p[:, 0] * np.roll(p[:, 1], -1) - np.roll(p[:, 0], -1) * p[:, 1])
+    if area2 < 0:  # clockwise: reverse vertices, and the per-segment values with them
+        p = p[::-1].copy()
+        fl = np.roll(fl[::-1], -1)
+        ld = np.roll(ld[::-1], -1)
+        area2 = -area2
+    seg = np.roll(p, -1, axis=0) - p
+    cross = seg[:, 0] * np.roll(seg, -1, axis=0)[:, 1] - seg[:, 1] * np.roll(seg, -1, axis=0)[:, 0]
+    convex = bool(np.all(cross >= -_TOL * size**2))
+    if block_coefficient is None:
+        block_coefficient = 0.5 * area2 / (np.ptp(p[:, 0]) * np.ptp(p[:, 1]))
+    if not (0 < block_coefficient <= 1.0 + 1e-12):
+        raise ValueError(
+            f"parameter 'block_coefficient' must lie in (0, 1], got {block_coefficient}"
+        )
+    return Waterline(
+        points=jnp.asarray(p),
+        flare=jnp.asarray(fl),
+        local_draft=jnp.asarray(ld),
+        draft=jnp.asarray(float(draft)),
+        block_coefficient=jnp.asarray(float(block_coefficient)),
+        convex=convex,
+        name=name,
+    )
+
+
+def mirror_half(half, flare=0.0, local_draft=None):
+    """Full closed polyline and per-segment values from half a waterline.
+
+    ``half``: (M, 2) vertices from the bow on the centreline (y = 0) along one side to the
+    stern on the centreline; per-segment ``flare``/``local_draft`` have M−1 entries (or are
+    scalars). Returns (points (2M−1, 2) closed, flare (2M−2,), local_draft (2M−2,) or None).
+    """
+    h = np.asarray(half, dtype=float)
+    if h.ndim != 2 or h.shape[1] != 2 or h.shape[0] < 2:
+        raise ValueError(f"half waterline must have shape (M, 2), M >= 2, got {h.shape}")
+    size = max(np.ptp(h[:, 0]), np.ptp(h[:, 1]), 1.0)
+    if abs(h[0, 1]) > _TOL * size or abs(h[-1, 1]) > _TOL * size:
+        raise ValueError(
+            "half waterline: the first and last points must lie on the centreline y = 0, "
+            f"got y = {h[0, 1]} and {h[-1, 1]}; otherwise the mirrored waterline is not closed"
+        )
+    m = h.shape[0] - 1
+    mirrored = h[-2::-1] * np.array([1.0, -1.0])
+    pts = np.concatenate([h, mirrored], axis=0)
+    fl = np.broadcast_to(np.asarray(flare, float), (m,))
+    fl = np.concatenate([fl, fl[::-1]])
+    ld = None
+    if local_draft is not None:
+        ld = np.broadcast_to(np.asarray(local_draft, float), (m,))
+        ld = np.concatenate([ld, ld[::-1]])
+    return pts, fl, ld
+
+
+def read_waterline(
+    path, *, draft: float, block_coefficient=None, name: str | None = None
+) -> Waterline:
+    """Read half a waterline from a text file and mirror it about the centreline (the thesis's
+    input format, appendix C.1).
+
+    One vertex per line, whitespace separated: ``x y [flare_deg [local_draft]]`` [m, m, °, m],
+    from the bow on the centreline along one side to the stern on the centreline; the flare
+    and local draft belong to the segment that starts at that vertex (ignored on the last
+    line). ``#`` starts a comment.
+    """
+    rows = []
+    for line in Path(path).read_text().splitlines():
+        line = line.split("#", 1)[0].strip()
+        if line:
+            rows.append([float(v) for v in line.split()])
+    if len(rows) < 2:
+        raise ValueError(f"waterline file {path}: needs at least two vertices")
+    width = max(len(r) for r in rows)
+    if min(len(r) for r in rows[:-1]) < width or width not in (2, 3, 4):
+        raise ValueError(
+            f"waterline file {path}: every line needs the same columns: x y [flare_deg [local_draft]]"
+        )
+    a = np.array([r + [np.nan] * (width - len(r)) for r in rows])
+    flare = np.radians(a[:-1, 2]) if width >= 3 else 0.0
+    local = a[:-1, 3] if width == 4 else None
+    pts, fl, ld = mirror_half(a[:, :2], flare, local)
+    return waterline(
+        pts,
+        draft=draft,
+        flare=fl,
+        local_draft=ld,
+        block_coefficient=block_coefficient,
+        name=name or Path(path).stem,
+    )
+
+
+def write_waterline(path, wl: Waterline) -> None:
+    """Write the port half (y ≥ 0) of a symmetric waterline in `read_waterline`'s format."""
+    p = np.asarray(wl.points)
+    fl, ld = np.degrees(np.asarray(wl.flare)), np.asarray(wl.local_draft)
+    n = p.shape[0]
+    i0 = int(np.argmax(np.where(np.abs(p[:, 1]) < _TOL * 1e3, p[:, 0], -np.inf)))
+    lines = ["# x [m]  y [m]  flare [deg]  local_draft [m]  (half waterline, bow to stern)"]
+    i = i0
+    while True:
+        lines.append(f"{p[i, 0]:.12g} {p[i, 1]:.12g} {fl[i]:.12g} {ld[i]:.12g}")
+        i = (i + 1) % n
+        if abs(p[i, 1]) < _TOL * 1e3 and i != i0:
+            lines.append(f"{p[i, 0]:.12g} {p[i, 1]:.12g}")
+            break
+    Path(path).write_text("\n".join(lines) + "\n")
+
+
+def box_waterline(
+    length: float = 76.2, breadth: float = 24.4, draft: float | None = None
+) -> Waterline:
+    """Rectangular wall-sided waterline (Barge 1: L = 76.2 m, B = 24.4 m), centred on
+    midships. The draft defaults to the documented Barge 2 estimate (5.0 m,
+    `jaxtow.presets.ASSUMPTIONS`); the thesis text does not give Barge 1's."""
+    T = presets.ASSUMPTIONS["draft"]["value"] if draft is None else draft
+    a, b = 0.5 * length, 0.5 * breadth
+    half = [(a, 0.0), (a, b), (-a, b), (-a, 0.0)]
+    pts, fl, _ = mirror_half(half)
+    return waterline(pts, draft=T, flare=fl, block_coefficient=1.0, name="box")
+
+
+def barge2_waterline(draft: float | None = None) -> Waterline:
+    """Barge 2 (76.2 m × 24.4 m): plan-rectangular waterline whose bow and stern faces are
+    raked, flare η = 47.7° (`jaxtow.presets.barge2_rake`, a documented estimate). The local
+    draft of the raked faces is the full draft T (the section behind the rake); Liu et al.'s
+    effective draft there is then min(T cos η, T) = T cos η."""
+    r = presets.barge2_rake(draft)
+    a, b = 0.5 * presets.BARGE2_LENGTH, 0.5 * presets.BARGE2_BREADTH
+    half = [(a, 0.0), (a, b), (-a, b), (-a, 0.0)]
+    pts, fl, _ = mirror_half(half, flare=[r["flare"], 0.0, r["flare"]])
+    return waterline(
+        pts, draft=r["draft"], flare=fl, block_coefficient=r["block_coefficient"], name="barge2"
+    )

@@ -1,0 +1,32 @@
+"""Environmental forces on the towed vessel: the one hook of the tow model.
+
+Every environmental force is an `AbstractExternalForce`: ``force(t, y, model)`` returns the
+non-dimensional body-axis load (X', Y', N') at the CoG in the scales of the manoeuvring
+forces (thesis eqs 6.14-6.16); forces with a physical size also give ``dimensional(y)`` in
+SI, and ``validity(y)`` the physics' own limits at that state. Several forces add up with
+`CombinedForce`. Equilibria, stability, sweeps, gradients and time-domain runs take any of
+them through ``TowModel(external=...)``; a new force (a drogue, a current profile) is a
+subclass with a ``__call__`` (see ``docs/howto/new-force.md`` and notebook 04).
+"""
+
+from ._base import (
+    AbstractExternalForce as AbstractExternalForce,
+    CombinedForce as CombinedForce,
+    ConstantBodyForce as ConstantBodyForce,
+    NoExternalForce as NoExternalForce,
+)
+from ._waves import (
+    IrregularWaveDriftForce as IrregularWaveDriftForce,
+    WaveDriftForce as WaveDriftForce,
+)
+from ._wind import WindForce as WindForce
+
+__all__ = [
+    "AbstractExternalForce",
+    "CombinedForce",
+    "ConstantBodyForce",
+    "NoExternalForce",
+    "IrregularWaveDriftForce",
+    "WaveDriftForce",
+    "WindForce",
+]

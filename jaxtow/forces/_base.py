@@ -1,0 +1,64 @@
+"""The environmental-force hook of the tow model and the generic forces built on it."""
+
+from __future__ import annotations
+
+import abc
+
+import jax.numpy as jnp
+from jaxtyping import Array, Float
+
+from .. import _rules as V
+
+
+class AbstractExternalForce(V.Checked):
+    """Hook for environmental forces (waves, wind, current) on the towed vessel.
+
+    ``__call__(t, y, model)`` returns the non-dimensional body-axis forces
+    (X', Y', N') at the CoG, in the same scales as the manoeuvring forces (thesis eqs
+    6.14-6.16). Forces may depend on time and on (u, v, r, ψ); they must not depend on the
+    towline state (l, γ). Equilibria evaluate the hook at t = 0 and therefore assume the
+    force is time-invariant (mean forces); time-varying parts belong to time-domain runs.
+    """
+
+    @abc.abstractmethod
+    def __call__(self, t, y, model) -> Float[Array, 3]: ...
+
+    def validity(self, y) -> dict:
+        """The physics' own validity limits of this force at state y, as named boolean
+        flags (True = valid) and the numbers behind them; none by default."""
+        return {}
+
+
+class NoExternalForce(AbstractExternalForce):
+    """Calm water, no wind: zero environmental force."""
+
+    def __call__(self, t, y, model):
+        return jnp.zeros(3, dtype=jnp.result_type(y))
+
+
+class ConstantBodyForce(AbstractExternalForce):
+    """A constant body-axis force (X', Y', N'), e.g. a mean drift force in a fixed heading
+    frame or a test load."""
+
+    force: Float[Array, 3] = V.rule_field(rule=V.FINITE)
+
+    def __check_init__(self):
+        if V.is_concrete(self.force) and jnp.shape(self.force) != (3,):
+            raise ValueError(f"parameter 'force' must have shape (3,), got {jnp.shape(self.force)}")
+
+    def __call__(self, t, y, model):
+        return self.force.astype(jnp.result_type(y))
+
+
+class CombinedForce(AbstractExternalForce):
+    """The sum of several environmental forces, e.g. wave drift and wind:
+    ``CombinedForce((waves, wind))``; sweep their parameters by path, e.g.
+    ``external.forces.0.omega`` (see `jaxtow.parameters`)."""
+
+    forces: tuple
+
+    def __call__(self, t, y, model):
+        out = jnp.zeros(3, dtype=jnp.result_type(y))
+        for f in self.forces:  # a static handful of forces
+            out = out + f(t, y, model)
+        return out

@@ -1,0 +1,40 @@
+"""Wind on the towed vessel as a tow-model force (thesis eqs 2.23-2.27)."""
+
+from __future__ import annotations
+
+import equinox as eqx
+import jax.numpy as jnp
+
+from .. import _rules as V
+from .._units import Scales
+from ..resistance._flow import OCIMFLoad
+from ._base import AbstractExternalForce
+
+
+def _float(x):
+    return jnp.asarray(x, dtype=float)
+
+
+class WindForce(AbstractExternalForce):
+    """Wind on the towed vessel as a tow-model force (`jaxtow.TowModel.external`; eqs
+    2.23-2.27): the OCIMF ``load`` (e.g. ``barge2_resistance().wind``) at the relative wind of
+    the barge's body velocity (u'U, v'U) in a wind of ``speed`` [m/s] from ``angle`` [rad]
+    relative to the tug's course (0 = head wind), i.e. from ``angle − ψ`` relative to the
+    bow; non-dimensional with ½ρTLU² (forces) and ½ρTL²U² (moment) of ``scales``. The yaw
+    rate's effect on the apparent wind is neglected (quasi-steady loads)."""
+
+    load: OCIMFLoad
+    speed: jnp.ndarray = V.rule_field(rule=V.NONNEGATIVE, converter=_float)
+    angle: jnp.ndarray = V.rule_field(rule=V.FINITE, converter=_float, default=0.0)
+    scales: Scales = eqx.field(static=True, default=None)
+
+    def __check_init__(self):
+        if self.scales is None:
+            raise ValueError("parameter 'scales' is required (e.g. jaxtow.presets.barge2_scales())")
+
+    def dimensional(self, y):
+        U = self.scales.u_tug
+        return self.load(y[0] * U, y[1] * U, self.speed, self.angle - y[5])
+
+    def __call__(self, t, y, model):
+        return self.scales.nondimensional(self.dimensional(y))

@@ -1,0 +1,181 @@
+"""The resistance budget of a tow and the required pull (thesis sections 7.1-7.2, figs 2.1, 7.2-7.4)."""
+
+from __future__ import annotations
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+
+from .._rules import POSITIVE
+from .._units import froude_number
+from ..drift import METHODS, QTF, Waterline, irregular_drift, irregular_sailing_drift
+from ..waves import DEFAULT_OMEGA, jonswap
+from ._flow import OCIMFLoad
+from ._sea import SeaState
+from ._tug import Tug
+
+COMPONENTS = ("current", "wind", "waves", "tug")
+
+
+class WaveDrift(eqx.Module):
+    """Mean wave drift in a JONSWAP sea with forward speed, (F_x, F_y, N) [N, N, N·m].
+
+    Either a waterline method of `jaxtow.drift.METHODS` (``method``, ``waterline``, its keyword
+    ``options``) or a panel/WAMIT mean-drift ``qtf`` (then the encounter frequency and
+    Aranha's wave-drift damping give the speed effect, eqs 2.35-2.41). ``omega`` is the
+    integration grid [rad/s] (default `jaxtow.waves.DEFAULT_OMEGA`)."""
+
+    waterline: Waterline | None
+    qtf: QTF | None
+    omega: jnp.ndarray
+    method: str = eqx.field(static=True, default="kashiwagi")
+    options: tuple = eqx.field(static=True, default=())
+
+    def __init__(
+        self, waterline=None, *, method: str = "kashiwagi", qtf=None, omega=None, options=None
+    ):
+        if (waterline is None) == (qtf is None):
+            raise ValueError("WaveDrift needs exactly one of 'waterline' (with 'method') or 'qtf'")
+        if qtf is None and method not in METHODS:
+            raise ValueError(
+                f"parameter 'method': unknown drift method {method!r}; choose from {sorted(METHODS)}"
+            )
+        self.waterline, self.qtf = waterline, qtf
+        self.method = "qtf" if qtf is not None else method
+        self.omega = jnp.asarray(DEFAULT_OMEGA if omega is None else omega, float)
+        self.options = tuple(sorted((options or {}).items()))
+
+    def __call__(self, hs, tp, gamma, beta, u, v):
+        if self.qtf is not None:
+            S = jonswap(self.omega, hs=hs, tp=tp, gamma=gamma)
+            return irregular_sailing_drift(self.qtf, self.omega, S, beta, u, v, 0.0)
+        return irregular_drift(
+            self.method,
+            self.waterline,
+            hs,
+            tp,
+            beta,
+            u,
+            v,
+            omega=self.omega,
+            gamma=gamma,
+            **dict(self.options),
+        )
+
+
+class TowResistance(eqx.Module):
+    """What is towed: its current/calm-water load ``hull``, its ``wind`` load and its mean
+    ``waves`` drift (either may be None), with ``assumed`` listing the estimates the
+    results depend on (carried into datasets). ``length`` [m] of the hull sets the Froude
+    number. Build Barge 2's with `jaxtow.presets.barge2_resistance`."""
+
+    hull: OCIMFLoad
+    wind: OCIMFLoad | None = None
+    waves: WaveDrift | None = None
+    name: str = eqx.field(static=True, default="tow")
+    assumed: tuple = eqx.field(static=True, default=())
+
+    @property
+    def length(self):
+        return self.hull.length
+
+    def body_forces(self, sea: SeaState, speed, heading=0.0):
+        """(3, 3) body-axis loads (F_x, F_y, N) of (current, wind, waves) at tow speed U."""
+        speed, heading = jnp.asarray(speed, float), jnp.asarray(heading, float)
+        u, v = speed * jnp.cos(heading), -speed * jnp.sin(heading)
+        zero = jnp.zeros(3)
+        hull = self.hull(u, v, sea.current_speed, sea.current_angle - heading)
+        wind = (
+            zero if self.wind is None else self.wind(u, v, sea.wind_speed, sea.wind_angle - heading)
+        )
+        waves = (
+            zero
+            if self.waves is None
+            else self.waves(sea.hs, sea.tp, sea.gamma, sea.wave_angle - heading, u, v)
+        )
+        return jnp.stack([hull, wind, waves])
+
+
+class Budget(eqx.Module):
+    """Resistance budget at one speed: ``resistance`` (4,) [N] along the course for
+    `COMPONENTS` = (current, wind, waves, tug), ``body`` (4, 3) body-axis loads, ``speed``
+    [m/s], ``froude`` Fn = U/√(gL). ``total`` sums the components; ``shares`` gives each in
+    % of the total."""
+
+    resistance: jnp.ndarray
+    body: jnp.ndarray
+    speed: jnp.ndarray
+    froude: jnp.ndarray
+
+    @property
+    def total(self):
+        return jnp.sum(self.resistance, axis=-1)
+
+    @property
+    def shares(self):
+        """Each component in % of the total (0 where the total is exactly 0: no load at all)."""
+        tot = self.total[..., None]
+        return jnp.where(tot != 0, 100.0 * self.resistance / jnp.where(tot != 0, tot, 1.0), 0.0)
+
+    def as_dict(self) -> dict:
+        return {c: self.resistance[..., i] for i, c in enumerate(COMPONENTS)}
+
+
+def resistance(
+    tow: TowResistance, sea: SeaState, speed, *, heading=0.0, tug: Tug | None = None
+) -> Budget:
+    """Resistance budget of the tow at speed U [m/s] along the course and heading ψ [rad]
+    (thesis figs 7.2-7.4): along-course resistance of current/calm water, wind, waves and (if
+    a ``tug`` is given) the tug's own resistance, R = −(F_x cos ψ − F_y sin ψ)."""
+    speed, heading = jnp.asarray(speed, float), jnp.asarray(heading, float)
+    body = tow.body_forces(sea, speed, heading)
+    along = -(body[:, 0] * jnp.cos(heading) - body[:, 1] * jnp.sin(heading))
+    r_tug = jnp.zeros(()) if tug is None else tug.resistance(speed)
+    body = jnp.concatenate([body, jnp.stack([-r_tug, 0.0 * r_tug, 0.0 * r_tug])[None]])
+    return Budget(
+        resistance=jnp.concatenate([along, r_tug[None]]),
+        body=body,
+        speed=speed,
+        froude=froude_number(speed, tow.length),
+    )
+
+
+class PullRequirement(eqx.Module):
+    """`required_pull` result: ``towing_force`` [N] (the total resistance), ``bollard_pull``
+    [N] the tug's rated bollard pull needed (towing force / (η · P(U)/BP) with the tug's curve;
+    equal to the towing force without a tug), and the ``budget``."""
+
+    towing_force: jnp.ndarray
+    bollard_pull: jnp.ndarray
+    budget: Budget
+
+
+def required_pull(
+    tow: TowResistance, sea: SeaState, *, speed=0.0, heading=0.0, tug: Tug | None = None
+) -> PullRequirement:
+    """Required towing force / bollard pull to hold the tow (``speed = 0``, the thesis's
+    survival case, sea state 1) or to make ``speed`` [m/s] in ``sea``.
+
+    With a ``tug`` its efficiency η, pull-curve shape and own resistance are used: the rated
+    bollard pull BP with η BP P(U)/BP = R_tow(U) + R_tug(U). Differentiable in every input.
+    A negative total (the environment pushes the tow ahead) is reported, not clipped."""
+    if tug is not None:
+        POSITIVE.check("bollard_pull", tug.bollard_pull)
+    b = resistance(tow, sea, speed, heading=heading, tug=tug)
+    total = b.total
+    bp = total if tug is None else total / (tug.efficiency * tug.shape(b.speed))
+    return PullRequirement(towing_force=total, bollard_pull=bp, budget=b)
+
+
+@eqx.filter_jit
+def resistance_grid(
+    tow: TowResistance, sea: SeaState, speeds, tps, *, heading=0.0, tug: Tug | None = None
+) -> Budget:
+    """`resistance` over a (speed, Tp) grid in one vmapped call: a `Budget` whose arrays
+    lead with (n_speed, n_tp) (thesis figs 7.2-7.4)."""
+    speeds, tps = jnp.asarray(speeds, float), jnp.asarray(tps, float)
+
+    def one(s, t):
+        return resistance(tow, eqx.tree_at(lambda x: x.tp, sea, t), s, heading=heading, tug=tug)
+
+    return jax.vmap(lambda s: jax.vmap(lambda t: one(s, t))(tps))(speeds)
