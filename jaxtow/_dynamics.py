@@ -64,15 +64,15 @@ class ForceBreakdown(eqx.Module):
     environmental hook), ``inertia`` (the generalised masses (m+a11, m+a22, Izz+a66)); and
     the scalar ``tension`` T'."""
 
-    manoeuvring: Float[Array, 3]
-    towline: Float[Array, 3]
-    coupling: Float[Array, 3]
-    external: Float[Array, 3]
-    inertia: Float[Array, 3]
+    manoeuvring: Float[Array, "3"]
+    towline: Float[Array, "3"]
+    coupling: Float[Array, "3"]
+    external: Float[Array, "3"]
+    inertia: Float[Array, "3"]
     tension: Float[Array, ""]
 
     @property
-    def total(self) -> Float[Array, 3]:
+    def total(self) -> Float[Array, "3"]:
         """The sum of the forces (without the inertia)."""
         return self.manoeuvring + self.towline + self.coupling + self.external
 
@@ -96,7 +96,7 @@ def force_breakdown(t, y, model: TowModel) -> ForceBreakdown:
     )
 
 
-def kinematics(y, xp, yp=0.0) -> Float[Array, 3]:
+def kinematics(y, xp, yp=0.0) -> Float[Array, "3"]:
     """Towline kinematics (l̇', γ̇, ψ̇), thesis eqs 6.4-6.6 (docs/model.md section 2), with the
     transverse offset y_p' of the module docstring."""
     u, v, r, l, gamma, psi = (y[i] for i in range(6))
@@ -110,7 +110,7 @@ def kinematics(y, xp, yp=0.0) -> Float[Array, 3]:
     return jnp.stack([ldot, gdot, r])
 
 
-def vector_field(t, y: Float[Array, 6], model: TowModel) -> Float[Array, 6]:
+def vector_field(t, y: Float[Array, "6"], model: TowModel) -> Float[Array, "6"]:
     """dy/dt' of the tow, thesis eqs 6.1-6.6; signature f(t, y, args) as in diffrax."""
     y = jnp.asarray(y)
     fb = force_breakdown(t, y, model)

@@ -64,14 +64,14 @@ def _interval(x, xq):
 
 def hermite(
     x: Float[Array, " n"], y: Float[Array, "... n"], m: Float[Array, "... n"], xq
-) -> Float[Array, ...]:
+) -> Float[Array, "..."]:
     """Cubic Hermite interpolation along the last axis at scalar ``xq`` (clamped to
     [x0, xn]) with node slopes ``m``."""
     _, i, h, t = _interval(x, xq)
     return hermite_cell(y[..., i], y[..., i + 1], m[..., i], m[..., i + 1], h, t)
 
 
-def hermite_local(x: Float[Array, " n"], take: Callable, xq) -> Float[Array, ...]:
+def hermite_local(x: Float[Array, " n"], take: Callable, xq) -> Float[Array, "..."]:
     """`hermite` with three-point node slopes and zero slope at both end nodes, computing
     only what the interval of ``xq`` needs: ``take(rows)`` returns the table values at the
     node indices ``rows`` (4 of them) along the last axis. The same numbers as the full table

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import jax.numpy as jnp
 from jax.scipy.special import i1e
+from jaxtyping import Array, ArrayLike, Float
 
 _H = 0.05
 _T = jnp.arange(0.0, 16.0 + _H / 2, _H)
@@ -24,19 +25,19 @@ _W = jnp.full(_T.shape, _H).at[0].set(_H / 2)
 _COSH = jnp.cosh(_T)
 
 
-def k1e(x):
+def k1e(x: ArrayLike) -> Float[Array, "..."]:
     """Exponentially scaled modified Bessel function of the second kind, exp(x)·K1(x), x > 0."""
     x = jnp.asarray(x, dtype=float)
     return jnp.sum(_W * jnp.exp(-x[..., None] * (_COSH - 1.0)) * _COSH, axis=-1)
 
 
-def k1(x):
+def k1(x: ArrayLike) -> Float[Array, "..."]:
     """Modified Bessel function of the second kind of order 1, K1(x), x > 0 (differentiable)."""
     x = jnp.asarray(x, dtype=float)
     return k1e(x) * jnp.exp(-x)
 
 
-def r_function(x):
+def r_function(x: ArrayLike) -> Float[Array, "..."]:
     """The R-function of Fujii & Takahashi (thesis eq. 2.52):
     α_d(x) = π² I1²(x) / (π² I1²(x) + K1²(x)), x = k·d.
 

@@ -24,7 +24,7 @@ STABILITY_LABELS = {STABLE: "stable", MARGINAL: "marginal", UNSTABLE: "unstable"
 STABILITY_TOL = 1e-9
 
 
-def jacobian(model: TowModel, y: Float[Array, 6], t=0.0) -> Float[Array, "6 6"]:
+def jacobian(model: TowModel, y: Float[Array, "6"], t=0.0) -> Float[Array, "6 6"]:
     """A = ∂f/∂y of the tow vector field at state y (forward-mode autodiff)."""
     return jax.jacfwd(vector_field, argnums=1)(t, jnp.asarray(y), model)
 
@@ -32,7 +32,9 @@ def jacobian(model: TowModel, y: Float[Array, 6], t=0.0) -> Float[Array, "6 6"]:
 EIG_METHODS = ("lapack", "polynomial")
 
 
-def eigenvalues(model: TowModel, y: Float[Array, 6], method: str = "lapack") -> Complex[Array, 6]:
+def eigenvalues(
+    model: TowModel, y: Float[Array, "6"], method: str = "lapack"
+) -> Complex[Array, "6"]:
     """Eigenvalues of the Jacobian at y (non-dimensional, per L/U_tug).
 
     ``method="lapack"`` (default): `jnp.linalg.eigvals` (LAPACK geev on CPU, cuSOLVER on
@@ -60,13 +62,13 @@ def matrix_max_real_eigenvalue(A: Float[Array, "n n"], method: str = "lapack") -
 
 
 def max_real_eigenvalue(
-    model: TowModel, y: Float[Array, 6], method: str = "lapack"
+    model: TowModel, y: Float[Array, "6"], method: str = "lapack"
 ) -> Float[Array, ""]:
     """max Re λ(∂f/∂y) at y: < 0 stable, > 0 unstable (thesis figs 2.6b, 6.4)."""
     return matrix_max_real_eigenvalue(jacobian(model, y), method)
 
 
-def classify(max_re, tol: float = STABILITY_TOL) -> Int[Array, ...]:
+def classify(max_re, tol: float = STABILITY_TOL) -> Int[Array, "..."]:
     """The stability rule: −1 stable (max Re λ < −tol), 0 marginal, +1 unstable
     (max Re λ > tol); see `STABILITY_LABELS`."""
     max_re = jnp.asarray(max_re)
@@ -137,7 +139,7 @@ def routh_first_column(coeffs: Float[Array, " n+1"]) -> Float[Array, " n+1"]:
     return jnp.stack(first)
 
 
-def routh_hurwitz_stable(model: TowModel, y: Float[Array, 6]) -> Bool[Array, ""]:
+def routh_hurwitz_stable(model: TowModel, y: Float[Array, "6"]) -> Bool[Array, ""]:
     """Routh-Hurwitz criterion: all roots in the open left half-plane (binary answer)."""
     return matrix_routh_hurwitz_stable(jacobian(model, y))
 

@@ -111,7 +111,7 @@ class Bridle(eqx.Module):
     """
 
     legs: Float[Array, "2 2"] = eqx.field(converter=lambda x: jnp.asarray(x, float))
-    apex: Float[Array, 2] = eqx.field(converter=lambda x: jnp.asarray(x, float))
+    apex: Float[Array, "2"] = eqx.field(converter=lambda x: jnp.asarray(x, float))
 
     def __check_init__(self):
         if V.is_concrete(self.legs) and V.is_concrete(self.apex):

@@ -68,11 +68,11 @@ class Vessel(V.Checked):
     name: str = eqx.field(static=True, default="vessel")
     assumed: tuple = eqx.field(static=True, default=())
 
-    def inertia(self) -> Float[Array, 3]:
+    def inertia(self) -> Float[Array, "3"]:
         """Diagonal generalised inertia (m + a11, m + a22, Izz + a66) of eqs 6.1-6.3."""
         return jnp.stack([self.m + self.a11, self.m + self.a22, self.Izz + self.a66])
 
-    def manoeuvring_forces(self, u, v, r) -> Float[Array, 3]:
+    def manoeuvring_forces(self, u, v, r) -> Float[Array, "3"]:
         """Hull forces (X_man, Y_man, N_man), docs/model.md section 2 (thesis eqs 6.1-6.3).
 
         Resistance is written −R0·u|u| so that it always opposes the surge velocity; with

@@ -8,11 +8,15 @@ from __future__ import annotations
 
 import jax
 import jax.numpy as jnp
+from jaxtyping import Array, ArrayLike, Float
 
 from .._units import G
+from ._qtf import QTF
 
 
-def wave_drift_damping(q, omega, beta, *, yaw_column=None, g: float = G):
+def wave_drift_damping(
+    q: QTF, omega: ArrayLike, beta: ArrayLike, *, yaw_column: ArrayLike | None = None, g: float = G
+) -> Float[Array, "3 3"]:
     """3×3 wave-drift damping matrix B per ζa², columns for (u, v, r), thesis eq. 2.39.
 
     Surge and sway columns from Aranha's formula (eqs 2.40, 2.41), with ∂F/∂ω and ∂F/∂β

@@ -106,7 +106,7 @@ class QTF(eqx.Module):
             return jnp.ones_like(beta, dtype=bool)
         return (beta >= self.beta[0]) & (beta <= self.beta[-1])
 
-    def __call__(self, omega, beta) -> Float[Array, 3]:
+    def __call__(self, omega, beta) -> Float[Array, "3"]:
         """(Fx, Fy, Nz) per ζa² at one (ω, β); vmap for grids.
 
         Only the table entries the point needs are touched: the four β columns around β

@@ -21,7 +21,7 @@ class AbstractExternalForce(V.Checked):
     """
 
     @abc.abstractmethod
-    def __call__(self, t, y, model) -> Float[Array, 3]: ...
+    def __call__(self, t, y, model) -> Float[Array, "3"]: ...
 
     def validity(self, y) -> dict:
         """The physics' own validity limits of this force at state y, as named boolean
@@ -40,7 +40,7 @@ class ConstantBodyForce(AbstractExternalForce):
     """A constant body-axis force (X', Y', N'), e.g. a mean drift force in a fixed heading
     frame or a test load."""
 
-    force: Float[Array, 3] = V.rule_field(rule=V.FINITE)
+    force: Float[Array, "3"] = V.rule_field(rule=V.FINITE)
 
     def __check_init__(self):
         if V.is_concrete(self.force) and jnp.shape(self.force) != (3,):

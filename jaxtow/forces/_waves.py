@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import equinox as eqx
 import jax.numpy as jnp
+from jaxtyping import Array, Float
 
 from .. import _rules as V
 from .._units import G, Scales
@@ -31,17 +32,17 @@ class WaveDriftForce(AbstractExternalForce):
     scales: Scales = eqx.field(static=True)
     yaw_column: jnp.ndarray | None = None
 
-    def dimensional(self, y):
+    def dimensional(self, y: Float[Array, "6"]) -> Float[Array, "3"]:
         """(Fx [N], Fy [N], Nz [N·m]) at non-dimensional state y."""
         U, L = self.scales.u_tug, self.scales.length
         u, v, r, psi = y[0] * U, y[1] * U, y[2] * U / L, y[5]
         F = sailing_drift(self.qtf, self.omega, -psi, u, v, r, yaw_column=self.yaw_column)
         return self.zeta_a**2 * F
 
-    def __call__(self, t, y, model):
+    def __call__(self, t, y: Float[Array, "6"], model) -> Float[Array, "3"]:
         return self.scales.nondimensional(self.dimensional(y))
 
-    def validity(self, y) -> dict:
+    def validity(self, y: Float[Array, "6"]) -> dict:
         """The thesis's validity limits at state y: Froude number Fn = U/√(gL) < 0.15, and no
         flow separation, U/(ω ζa) < 1 (docs/model.md section 8), plus the heading in the table."""
         U = self.scales.u_tug * jnp.sqrt(y[0] ** 2 + y[1] ** 2)
@@ -84,5 +85,5 @@ class IrregularWaveDriftForce(AbstractExternalForce):
             yaw_column=self.yaw_column,
         )
 
-    def __call__(self, t, y, model):
+    def __call__(self, t, y: Float[Array, "6"], model) -> Float[Array, "3"]:
         return self.scales.nondimensional(self.dimensional(y))

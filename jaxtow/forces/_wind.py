@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import equinox as eqx
 import jax.numpy as jnp
+from jaxtyping import Array, Float
 
 from .. import _rules as V
 from .._units import Scales
@@ -32,9 +33,9 @@ class WindForce(AbstractExternalForce):
         if self.scales is None:
             raise ValueError("parameter 'scales' is required (e.g. jaxtow.presets.barge2_scales())")
 
-    def dimensional(self, y):
+    def dimensional(self, y: Float[Array, "6"]) -> Float[Array, "3"]:
         U = self.scales.u_tug
         return self.load(y[0] * U, y[1] * U, self.speed, self.angle - y[5])
 
-    def __call__(self, t, y, model):
+    def __call__(self, t, y: Float[Array, "6"], model) -> Float[Array, "3"]:
         return self.scales.nondimensional(self.dimensional(y))

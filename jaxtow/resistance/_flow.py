@@ -7,6 +7,7 @@ import math
 import equinox as eqx
 import jax.numpy as jnp
 import numpy as np
+from jaxtyping import Array, ArrayLike, Float
 
 from .. import _rules as V
 from .._interp import hermite, three_point_slopes
@@ -23,7 +24,9 @@ def _wrap(a):
     return jnp.arctan2(jnp.sin(a), jnp.cos(a))
 
 
-def relative_flow(u, v, speed, angle):
+def relative_flow(
+    u: ArrayLike, v: ArrayLike, speed: ArrayLike, angle: ArrayLike
+) -> tuple[Float[Array, ""], Float[Array, ""]]:
     """Apparent flow on a vessel with body velocity (u, v) [m/s] in a flow of ``speed`` [m/s]
     coming from ``angle`` [rad, from the bow, counter-clockwise]: returns (U_r², α_r), the
     squared relative speed and the relative angle it comes from (eqs 2.23, 2.24).
@@ -31,7 +34,7 @@ def relative_flow(u, v, speed, angle):
     U_r² rather than U_r keeps the loads smooth through zero relative flow; there α_r is set
     to 0 (the load is zero anyway) so that no NaN enters a gradient.
     """
-    ax = speed * jnp.cos(angle) + u
+    ax = jnp.asarray(speed * jnp.cos(angle) + u)
     ay = speed * jnp.sin(angle) + v
     s2 = ax**2 + ay**2
     safe = s2 > 1e-300
@@ -141,7 +144,9 @@ class OCIMFLoad(V.Checked):
     breadth: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
     height: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
 
-    def __call__(self, u, v, speed, angle):
+    def __call__(
+        self, u: ArrayLike, v: ArrayLike, speed: ArrayLike, angle: ArrayLike
+    ) -> Float[Array, "3"]:
         U2, alpha = relative_flow(u, v, speed, angle)
         cx, cy, cn = self.coefficients(alpha)
         q = 0.5 * self.rho * U2 * self.height

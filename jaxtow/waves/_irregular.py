@@ -11,6 +11,7 @@ from __future__ import annotations
 import jax
 import jax.numpy as jnp
 import numpy as np
+from jaxtyping import Array, ArrayLike, Float
 
 from ._spectra import _integrate
 
@@ -20,7 +21,9 @@ from ._spectra import _integrate
 DEFAULT_OMEGA = np.linspace(0.05, 4.0, 800)
 
 
-def spectral_integral(omega, S, X):
+def spectral_integral(
+    omega: Float[ArrayLike, " nw"], S: Float[ArrayLike, " nw"], X: Float[ArrayLike, "nw ..."]
+) -> Float[Array, "..."]:
     """2 ∫ S(ω) X(ω) dω by the trapezoidal rule on the grid ``omega``: the one irregular-sea
     integral of jaxtow. ``X`` has ω on axis 0 and any trailing axes (a QTF component (n_ω,),
     the three drift components (n_ω, 3), a damping matrix (n_ω, 3, 3))."""
@@ -28,7 +31,9 @@ def spectral_integral(omega, S, X):
     return 2.0 * _integrate(omega, jnp.moveaxis(X, 0, -1) * jnp.asarray(S))
 
 
-def mean_drift(omega, S, P):
+def mean_drift(
+    omega: Float[ArrayLike, " nw"], S: Float[ArrayLike, " nw"], P: Float[ArrayLike, "nw ..."]
+) -> Float[Array, "..."]:
     """Mean drift force in irregular waves, F̄ = 2 ∫ S(ω) P(ω) dω (thesis eq. 2.29), with
     `spectral_integral`; ``P`` (n_ω, ...) per ζa².
 
@@ -38,13 +43,20 @@ def mean_drift(omega, S, P):
     return spectral_integral(omega, S, P)
 
 
-def mean_drift_damping(omega, S, B):
+def mean_drift_damping(
+    omega: Float[ArrayLike, " nw"], S: Float[ArrayLike, " nw"], B: Float[ArrayLike, "nw ..."]
+) -> Float[Array, "..."]:
     """Mean wave-drift damping in irregular waves, b = 2 ∫ B(ω) S(ω) dω (thesis eq. 2.49),
     with `spectral_integral`; ``B`` has ω on axis 0 (e.g. (n_ω, 3, 3) for the full matrix)."""
     return spectral_integral(omega, S, B)
 
 
-def slow_drift_force_spectrum(omega, S, P, mu):
+def slow_drift_force_spectrum(
+    omega: Float[ArrayLike, " nw"],
+    S: Float[ArrayLike, " nw"],
+    P: Float[ArrayLike, " nw"],
+    mu: ArrayLike,
+) -> Float[Array, " nmu"]:
     """Slow-drift force spectrum S_F(μ) = 8 ∫ S(ω) S(ω+μ) |T(ω, ω+μ)|² dω (thesis eq. 2.30).
 
     Newman's approximation: T(ω, ω+μ) is the mean-drift QTF at the mean frequency ω + μ/2,

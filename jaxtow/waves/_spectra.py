@@ -90,7 +90,7 @@ class AbstractSpectrum(V.Checked):
     tp: eqx.AbstractVar[Float[Array, ""]]
 
     @abc.abstractmethod
-    def __call__(self, omega) -> Float[Array, ...]: ...
+    def __call__(self, omega) -> Float[Array, "..."]: ...
 
     @property
     def omega_peak(self):
