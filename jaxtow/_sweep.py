@@ -168,9 +168,8 @@ def sweep_arrays(
     chunk = max(ndev, min(int(chunk_size), 1 << max(npts - 1, 1).bit_length()))
     chunk = int(math.ceil(chunk / ndev) * ndev)
     nchunks = int(math.ceil(npts / chunk))
-    if kernel is None and specialise:
-        kernel = make_specialised_kernel(
-            model,
+    if kernel is None:
+        options = dict(
             method=method,
             n_grid=n_grid,
             max_roots=max_roots,
@@ -178,14 +177,10 @@ def sweep_arrays(
             routh_hurwitz=routh_hurwitz,
             eig_method=eig_method,
         )
-    elif kernel is None:
-        kernel = make_batched_kernel(
-            method=method,
-            n_grid=n_grid,
-            max_roots=max_roots,
-            psi_range=psi_range,
-            routh_hurwitz=routh_hurwitz,
-            eig_method=eig_method,
+        kernel = (
+            make_specialised_kernel(model, **options)
+            if specialise
+            else make_batched_kernel(**options)
         )
     sharding = NamedSharding(mesh, P("points"))
     bar = Progress(nchunks, label="sweep", enabled=progress)
