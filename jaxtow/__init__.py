@@ -60,6 +60,15 @@ from ._metrics import (
     trajectory as trajectory,
 )
 from ._parameters import get_parameter as get_parameter, with_parameters as with_parameters
+from ._rules import (
+    FINITE as FINITE,
+    NONNEGATIVE as NONNEGATIVE,
+    POSITIVE as POSITIVE,
+    Rule as Rule,
+    at_least as at_least,
+    in_range as in_range,
+    rule_field as rule_field,
+)
 from ._simulate import (
     Simulation as Simulation,
     initial_state as initial_state,
@@ -90,6 +99,13 @@ from ._units import RHO_SEA as RHO_SEA, G as G, Scales as Scales, froude_number 
 from ._vessel import VESSEL_PARAMETERS as VESSEL_PARAMETERS, Vessel as Vessel
 
 __all__ = [
+    "FINITE",
+    "NONNEGATIVE",
+    "POSITIVE",
+    "Rule",
+    "at_least",
+    "in_range",
+    "rule_field",
     "STATE_NAMES",
     "ForceBreakdown",
     "TowModel",

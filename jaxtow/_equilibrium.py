@@ -116,7 +116,7 @@ def hull_forces_at_heading(psi, model: TowModel):
 def heading_residual(psi, model: TowModel):
     """F(ψ) = N(ψ) − x_p' Y(ψ) (docs/model.md section 4; thesis eqs 6.17-6.23), + y_p' X(ψ) for
     a transverse attachment offset (the towline moment −T'(x_p' sin a + y_p' cos a) with
-    T' sin a = Y, T' cos a = −X; see `jaxtow.dynamics`)."""
+    T' sin a = Y, T' cos a = −X; see `jaxtow.vector_field` (docs/model.md section 2))."""
     X, Y, N = hull_forces_at_heading(psi, model)
     return N - model.towline.xp * Y + model.towline.yp * X
 

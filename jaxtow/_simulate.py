@@ -3,7 +3,7 @@
 `simulate` integrates the vector field of eqs 6.1-6.6 from an initial state and returns the
 states on a save grid with the solver status; `simulate_batch` runs many initial conditions
 and parameter sets in one compiled call. Post-processing (trajectory, metrics) lives in
-`jaxtow.metrics`.
+`jaxtow.fishtail_metrics`.
 
 Solvers: an adaptive explicit Runge-Kutta (Tsit5) by default; the implicit Kvaerno5 for
 stiff towlines. ``solver="auto"`` picks Kvaerno5 when the fastest mode of the Jacobian at
@@ -163,7 +163,7 @@ def simulate_batch(
     batch_size: int | None = 64,
 ) -> Simulation:
     """Many runs in one compiled call: initial states ``y0s`` (B, 6) and, optionally,
-    per-run model parameters ``params`` {name: (B,) values} (see `jaxtow.parameters`).
+    per-run model parameters ``params`` {name: (B,) values} (see `jaxtow.with_parameters`).
 
     Adaptive solves under `vmap` run in lockstep: every member takes as many steps as the
     slowest. ``batch_size`` bounds that cost: runs are processed by `jax.lax.map` in vmapped

@@ -1,7 +1,7 @@
 """Vectorised parameter sweeps: grids → one vmapped, jitted kernel → labelled results.
 
 A sweep evaluates, at every point of a Cartesian grid of named parameters (see
-`jaxtow.parameters`), all equilibria and their linear stability. The kernel for one point is
+`jaxtow.with_parameters`), all equilibria and their linear stability. The kernel for one point is
 lifted with `jax.vmap`; the grid is flattened and processed in chunks of ``chunk_size``
 points (memory stays bounded, a progress bar advances), each chunk sharded across all
 available JAX devices with `jax.sharding` (a 1-D mesh over the point axis). The kernel is
@@ -61,7 +61,7 @@ def point_kernel(
 
     ``routh_hurwitz=False`` drops the Routh-Hurwitz cross-check (about a third of the cost
     of the calm-water kernel) when only the eigenvalues are wanted. ``eig_method``: see
-    `jaxtow.stability.eigenvalues`.
+    `jaxtow.eigenvalues`.
     """
     mdl = with_parameters(model, **params)
     if method == "analytic":
@@ -139,7 +139,7 @@ def sweep_arrays(
     ``grid`` maps parameter names to 1-D value arrays (a Cartesian product is taken).
     All values are checked before anything runs; an invalid one is an error naming it.
     ``devices``: JAX devices to shard each chunk over (default: all). ``eig_method``:
-    "lapack" or "polynomial" (`jaxtow.stability.eigenvalues`); by default "polynomial" when
+    "lapack" or "polynomial" (`jaxtow.eigenvalues`); by default "polynomial" when
     the chunk is sharded over several CPU devices (concurrent LAPACK calls into OpenBLAS
     deadlocked there), else "lapack". ``specialise=True`` compiles the kernel for this model
     instance (its arrays become compile-time constants): about 2x faster for an expensive

@@ -58,7 +58,7 @@ class Towline(AbstractTowline):
 
     ``l0``: unstretched length / L; ``xp``: attachment point ahead of the CoG / L;
     ``EA``: axial stiffness / (½ρTLU_tug²); ``yp``: transverse attachment offset to port / L
-    (default 0; see `jaxtow.dynamics` for the extra moment arm).
+    (default 0; see `jaxtow.vector_field` (docs/model.md section 2) for the extra moment arm).
     """
 
     l0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
@@ -104,7 +104,7 @@ class Bridle(eqx.Module):
 
     While both legs are taut the towline force acts at the apex, so the bridle is the
     equivalent attachment point (x_p', y_p') = apex of the equations of motion
-    (`jaxtow.dynamics`); `towline` builds that line. A leg goes slack when the towline
+    (`jaxtow.vector_field` (docs/model.md section 2)); `towline` builds that line. A leg goes slack when the towline
     direction leaves the cone of the legs: `leg_tensions` solves the apex balance
     t1 e1 + t2 e2 = −T' d (e_i unit vectors from the apex to the leg points, d the towline
     pull direction (cos a, −sin a), a = γ + ψ) and `taut` says whether both t_i > 0.

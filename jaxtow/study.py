@@ -48,6 +48,15 @@ def approximate_qtf(method: str = "kashiwagi", draft=None):
     return qtf_from_method(method, barge2_waterline(draft), QTF_OMEGA, np.radians(QTF_BETA_DEG))
 
 
+def _barge2_tow(version, l0, xp, u_tug, external) -> TowModel:
+    """Barge 2a/2b on the documented steel towline with an environmental force."""
+    return TowModel(
+        vessel=presets.VESSELS[f"barge_{version}"](),
+        towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug),
+        external=external,
+    )
+
+
 def barge2_wave_model(
     version: str = "2a",
     *,
@@ -61,16 +70,12 @@ def barge2_wave_model(
 ) -> TowModel:
     """Barge 2a/2b on the documented steel towline in regular head waves (ω [rad/s], ζa [m])
     at tug speed ``u_tug`` (thesis chapter 6.2 base: x_p' = 0.5, ζa = 1.2-1.25 m, 2 m/s);
-    ``wind``: an optional `jaxtow.resistance.WindForce` added to the waves (thesis 7.2.2).
+    ``wind``: an optional `jaxtow.forces.WindForce` added to the waves (thesis 7.2.2).
     Sweep ω and ζa as ``external.omega`` / ``external.zeta_a`` (without wind)."""
     q = approximate_qtf() if qtf is None else qtf
     waves = WaveDriftForce(qtf=q, omega=omega, zeta_a=zeta_a, scales=presets.barge2_scales(u_tug))
     ext = waves if wind is None else CombinedForce((waves, wind))
-    return TowModel(
-        vessel=presets.VESSELS[f"barge_{version}"](),
-        towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug),
-        external=ext,
-    )
+    return _barge2_tow(version, l0, xp, u_tug, ext)
 
 
 def barge2_irregular_model(
@@ -91,11 +96,7 @@ def barge2_irregular_model(
     force = IrregularWaveDriftForce(
         qtf=q, spectrum=Jonswap(hs=hs, tp=tp), omega=w, scales=presets.barge2_scales(u_tug)
     )
-    return TowModel(
-        vessel=presets.VESSELS[f"barge_{version}"](),
-        towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug),
-        external=force,
-    )
+    return _barge2_tow(version, l0, xp, u_tug, force)
 
 
 def nearest_straight(arrays: dict, field: str = "max_real"):

@@ -601,7 +601,7 @@ def mesh_convergence(
 ):
     """Mesh-convergence study (thesis appendix B.1): `bem_drift` for each panel size
     (``build_mesh(panel_size) -> HullMesh``), and the relative MSE (eq. 3.8 as in
-    `jaxtow.drift.compare`) of each mesh's far- and near-field surge and sway against the finest
+    `jaxtow.drift.relative_mse_by_zone`) of each mesh's far- and near-field surge and sway against the finest
     mesh's far field, per zone and overall, and of each mesh's near field against its own far
     field. Returns (datasets by panel size, summary Dataset over panel_size with
     ``panels_per_length``, ``panels_per_breadth``, ``mse`` (panel_size, drift_method, component,

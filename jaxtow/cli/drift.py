@@ -60,7 +60,7 @@ def cmd_drift(args):
         block_coefficient=float(wl.block_coefficient),
         base=args.base,
         assumptions="Barge 2 rake and drafts: jaxtow.presets.ASSUMPTIONS; garbled formulas: "
-        "see jaxtow.drift.methods docstrings",
+        "see jaxtow.drift.METHODS docstrings",
     )
 
     # stationary, regular waves (figs 4.3, 4.4)

@@ -53,7 +53,7 @@ class ConstantBodyForce(AbstractExternalForce):
 class CombinedForce(AbstractExternalForce):
     """The sum of several environmental forces, e.g. wave drift and wind:
     ``CombinedForce((waves, wind))``; sweep their parameters by path, e.g.
-    ``external.forces.0.omega`` (see `jaxtow.parameters`)."""
+    ``external.forces.0.omega`` (see `jaxtow.with_parameters`)."""
 
     forces: tuple
 
