@@ -4,8 +4,8 @@ The same physics as jaxtow's `WaveDriftForce` tow model (thesis eqs 6.1-6.6, 6.1
 2.35-2.41) written the way a MATLAB/NumPy workflow does it: a Python loop over the grid
 points, `scipy.optimize.fsolve` on the six steady-state equations from several starting
 headings, a central finite-difference Jacobian, `numpy.linalg.eigvals`; the QTF is the same
-cubic Hermite interpolant (ported to NumPy) and Aranha's wave-drift damping takes ∂F/∂ω and
-∂F/∂β by central differences.
+cubic Hermite interpolant (ported to NumPy) and the forward-speed drift is Aranha's finite
+form (jaxtow's default).
 """
 
 from __future__ import annotations
@@ -68,16 +68,13 @@ class NumpyQTF:
         return _hermite(self.b, along, _slopes(self.b, along, self.periodic), beta)
 
 
-def sailing_drift(q, omega0, beta, u, v, h=1e-6):
-    """F(ω_e, β) + B(ω_e, β)·(u, v) with Aranha's B by central differences (no yaw column)."""
-    we = omega0 + omega0**2 / G * (u * math.cos(beta) + v * math.sin(beta))
-    F = q(we, beta)
-    dw = (q(we + h, beta) - q(we - h, beta)) / (2 * h)
-    db = (q(we, beta + h) - q(we, beta - h)) / (2 * h)
+def sailing_drift(q, omega0, beta, u, v):
+    """Aranha's finite form [1 + (4ω/g) U·ê] F(ω_e, β_e) (jaxtow's default; no yaw column)."""
     c, s = math.cos(beta), math.sin(beta)
-    col_u = we / G * (we * c * dw - 2 * s * db + 4 * c * F)
-    col_v = we / G * (we * s * dw + 2 * c * db + 4 * s * F)
-    return F + col_u * u + col_v * v
+    along, across = u * c + v * s, -u * s + v * c
+    we = omega0 + omega0**2 / G * along
+    be = beta + 2 * omega0 / G * across
+    return (1 + 4 * omega0 * along / G) * q(we, be)
 
 
 def vector_field(y, p):

@@ -7,7 +7,7 @@ bracketing the heading residual, Jacobians by autodiff, LAPACK eigenvalues. The 
 is timed on a random subset of the same points (it would take hours on the full map) and the
 per-point costs are compared; on that subset the two must agree. JIT compile time is
 reported separately. Drift forces: the documented Kashiwagi-waterline QTF stand-in
-(`jaxtow.drift.qtf_from_method`) with Aranha's wave-drift damping.
+(`jaxtow.drift.qtf_from_method`) with Aranha's finite form for the forward speed.
 
     python benchmarks/bench_wave_map.py [--n 200] [--subset 60] [--json out.json]
 """

@@ -42,8 +42,11 @@ from ._dynamics import (
     STATE_NAMES as STATE_NAMES,
     ForceBreakdown as ForceBreakdown,
     TowModel as TowModel,
+    all_valid as all_valid,
+    at_tug_speed as at_tug_speed,
     force_breakdown as force_breakdown,
     sway_offset as sway_offset,
+    validity as validity,
     vector_field as vector_field,
 )
 from ._equilibrium import (
@@ -112,6 +115,9 @@ __all__ = [
     "force_breakdown",
     "sway_offset",
     "vector_field",
+    "at_tug_speed",
+    "validity",
+    "all_valid",
     "Equilibria",
     "analytic_equilibria",
     "equilibria",

@@ -20,11 +20,13 @@ from __future__ import annotations
 import math
 
 import equinox as eqx
+import jax
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
 from . import _rules as V
 from ._towline import AbstractTowline
+from ._units import Scales
 from ._vessel import Vessel
 from .forces._base import AbstractExternalForce, NoExternalForce
 
@@ -44,17 +46,75 @@ class TowModel(V.Checked):
 
     ``psi_max``: largest |ψ| [rad] at which the manoeuvring model is trusted; equilibria
     beyond it are flagged (default π/2: the vessel must move bow first).
+
+    ``scales``: the reference scales (L, T, ρ, U_tug) the non-dimensional towline and force
+    parameters refer to. Optional: by default the scales of the external force are used
+    (`reference_scales`); the tug speed can be changed (swept, differentiated) only when the
+    model has them (`jaxtow.at_tug_speed`, parameter ``u_tug``). Every `Scales` inside the
+    model must agree with them.
     """
 
     vessel: Vessel
     towline: AbstractTowline
     external: AbstractExternalForce = NoExternalForce()
     psi_max: Float[Array, ""] = V.rule_field(rule=V.in_range(0.0, math.pi), default=math.pi / 2)
+    scales: Scales | None = None
+
+    def __check_init__(self):
+        found = all_scales(self)
+        concrete = [s for s in found if V.is_concrete(s.u_tug)]
+        keys = {(s.length, s.draft, s.rho, float(s.u_tug)) for s in concrete}
+        if len(keys) > 1:
+            raise ValueError(
+                "parameter 'scales': the reference scales inside the model disagree "
+                f"(length, draft, rho, u_tug) = {sorted(keys)}; build every force and the "
+                "model with the same Scales"
+            )
+
+    @property
+    def reference_scales(self) -> Scales | None:
+        """The model's `Scales`: ``scales`` if given, else those of the external force (None
+        for a calm-water model built without them)."""
+        found = all_scales(self)
+        return found[0] if found else None
 
     @property
     def assumed(self) -> tuple:
         """Values of this model that are documented estimates, not published data."""
         return self.vessel.assumed
+
+
+def _is_scales(x) -> bool:
+    return isinstance(x, Scales)
+
+
+def all_scales(tree) -> list:
+    """Every `Scales` inside a pytree (the model's own first)."""
+    leaves = jax.tree_util.tree_leaves(tree, is_leaf=_is_scales)
+    return [x for x in leaves if isinstance(x, Scales)]
+
+
+def at_tug_speed(model: TowModel, u_tug) -> TowModel:
+    """The model at tug speed ``u_tug`` [m/s] (pure, differentiable, works under jit/vmap).
+
+    The non-dimensional force scale ½ρTLU² follows U_tug: the towline's stiffness' is
+    multiplied by (U_old/U_tug)² (`AbstractTowline.rescaled`) and every `Scales` in the model
+    (the model's and each force's) gets the new U_tug, so the wave, wind and current forces
+    are made non-dimensional at the new speed. The vessel's non-dimensional derivatives and
+    masses do not depend on U_tug (the usual assumption of the manoeuvring model at low
+    Froude number, docs/model.md section 1). Needs the model's reference scales."""
+    ref = model.reference_scales
+    if ref is None:
+        raise ValueError(
+            "parameter 'u_tug': the model has no reference scales to change the tug speed of; "
+            "build it with TowModel(..., scales=jaxtow.Scales(length=..., draft=..., u_tug=...))"
+        )
+    u_tug = jnp.asarray(u_tug, dtype=float)
+    model = eqx.tree_at(
+        lambda m: m.towline, model, model.towline.rescaled((ref.u_tug / u_tug) ** 2)
+    )
+    n = len(all_scales(model))
+    return eqx.tree_at(lambda m: [s.u_tug for s in all_scales(m)], model, [u_tug] * n)
 
 
 class ForceBreakdown(eqx.Module):
@@ -94,6 +154,28 @@ def force_breakdown(t, y, model: TowModel) -> ForceBreakdown:
         inertia=ves.inertia(),
         tension=T,
     )
+
+
+def validity(model: TowModel, y) -> dict:
+    """The physics' validity limits at state y, as named flags (True = valid) and the numbers
+    behind them: ``line_taut`` (the towline carries tension; a slack line is outside the
+    equilibrium theory of the tow) and the flags of the external force
+    (`AbstractExternalForce.validity`, e.g. Froude number, flow separation, encounter
+    frequency, heading in the table). Pure; vmap it over states."""
+    y = jnp.asarray(y)
+    out = {"line_taut": model.towline.tension(y[3]) > 0}
+    out.update(model.external.validity(y))
+    return out
+
+
+def all_valid(flags: dict):
+    """The logical and of every boolean flag of a `validity` dict."""
+    ok = jnp.asarray(True)
+    for v in flags.values():
+        v = jnp.asarray(v)
+        if v.dtype == bool:
+            ok = ok & v
+    return ok
 
 
 def kinematics(y, xp, yp=0.0) -> Float[Array, "3"]:

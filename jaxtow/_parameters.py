@@ -1,7 +1,10 @@
 """Addressing model parameters by name, for sweeps, sensitivities and the command line.
 
 A parameter name is a field of the vessel (``m``, ``a22``, ``Yv`` ...), of the towline
-(``l0``, ``xp``, ``yp``, ``EA``, ``Sb``, ``q``) or of the model (``psi_max``), or a dotted
+(``l0``, ``xp``, ``yp``, ``EA``, ``Sb``, ``q``) or of the model (``psi_max``), the tug speed
+``u_tug`` [m/s] (`jaxtow.at_tug_speed`: the towline stiffness' and every force scale follow
+it; applied before the other parameters, so a towline stiffness' given with it refers to
+the new speed), or a dotted
 path into the model for anything else, e.g. ``external.omega`` and ``external.zeta_a`` of a
 regular-wave drift force, ``external.spectrum.tp`` of an irregular one, or
 ``external.forces.1.speed`` inside a `CombinedForce`.
@@ -15,8 +18,8 @@ import functools
 import equinox as eqx
 import jax.numpy as jnp
 
-from ._dynamics import TowModel
-from ._rules import rule_of
+from ._dynamics import TowModel, at_tug_speed
+from ._rules import POSITIVE, rule_of
 from ._vessel import VESSEL_PARAMETERS
 
 PARAMETER_UNITS = {
@@ -27,6 +30,7 @@ PARAMETER_UNITS = {
     "Sb": ("1", "power-law towline stiffness Sb' (by 0.5 rho T L U_tug^2)"),
     "q": ("1", "power-law towline exponent q"),
     "psi_max": ("rad", "largest trusted heading"),
+    "u_tug": ("m s-1", "tug speed U_tug"),
     "external.omega": ("rad/s", "regular-wave frequency omega"),
     "external.zeta_a": ("m", "regular-wave amplitude zeta_a"),
     "external.spectrum.hs": ("m", "significant wave height Hs"),
@@ -60,9 +64,11 @@ def _owner(model: TowModel, name: str) -> str:
         return "towline"
     if name == "psi_max":
         return "model"
+    if name == "u_tug":
+        return "tug"
     raise ValueError(
         f"unknown parameter {name!r}: expected a vessel field {VESSEL_PARAMETERS}, a towline "
-        f"field of {type(model.towline).__name__}, or 'psi_max'"
+        f"field of {type(model.towline).__name__}, 'psi_max' or 'u_tug'"
     )
 
 
@@ -70,12 +76,20 @@ def get_parameter(model: TowModel, name: str):
     owner = _owner(model, name)
     if owner == "path":
         return _resolve(model, name)
+    if owner == "tug":
+        ref = model.reference_scales
+        if ref is None:
+            raise ValueError("parameter 'u_tug': the model has no reference scales")
+        return ref.u_tug
     obj = model if owner == "model" else getattr(model, owner)
     return getattr(obj, name)
 
 
 def with_parameters(model: TowModel, **values) -> TowModel:
     """Copy of `model` with the named parameters replaced (works under jit and vmap)."""
+    if "u_tug" in values:  # first: the other non-dimensional values refer to the new speed
+        values = dict(values)
+        model = at_tug_speed(model, values.pop("u_tug"))
     for name, val in values.items():
         owner = _owner(model, name)
         if owner == "path":
@@ -95,6 +109,11 @@ def check_values(model: TowModel, name: str, values) -> None:
     Applies the rule declared on the field (`jaxtow._rules`), the same rule that checks the
     field at construction and under jit."""
     owner = _owner(model, name)
+    if owner == "tug":
+        if model.reference_scales is None:
+            at_tug_speed(model, 1.0)  # the error that names the missing scales
+        POSITIVE.check(name, values)
+        return
     if owner == "path":
         parts = _parts(name)
         obj, field = functools.reduce(_step, parts[:-1], model), parts[-1]

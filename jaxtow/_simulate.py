@@ -21,7 +21,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
-from ._dynamics import TowModel, vector_field
+from ._dynamics import TowModel, all_valid, validity, vector_field
 from ._parameters import check_values, with_parameters
 from ._stability import eigenvalues
 
@@ -33,13 +33,16 @@ STIFF_THRESHOLD = 2.0e5
 class Simulation(eqx.Module):
     """Result of a run: ``ts`` (n,), ``ys`` (n, 6) in (u, v, r, l, γ, ψ), ``success``
     (the solver reached t1), ``result`` (diffrax result code), ``n_steps`` (accepted steps),
-    ``valid`` (n,) (finite saved states: after a failure diffrax fills the rest with inf)."""
+    ``validity`` ({name: (n,)}: the physics' validity flags and numbers along the run,
+    `jaxtow.validity`; ``physics_valid`` is their logical and), ``valid`` (n,) (finite saved
+    states: after a failure diffrax fills the rest with inf)."""
 
     ts: Float[Array, " n"]
     ys: Float[Array, "n 6"]
     success: Bool[Array, ""]
     result: diffrax.RESULTS
     n_steps: Int[Array, ""]
+    validity: dict
 
     @property
     def valid(self):
@@ -100,12 +103,15 @@ def _run(model, y0, ts, *, solver: str, rtol: float, atol: float, max_steps: int
         model, y0, ts[0], ts[-1], ts=ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps
     )
     ok = sol.result == diffrax.RESULTS.successful
+    flags = jax.vmap(lambda y: validity(model, y))(sol.ys)
+    flags["physics_valid"] = jax.vmap(all_valid)(flags)
     return Simulation(
         ts=sol.ts,
         ys=sol.ys,
         success=ok,
         result=sol.result,
         n_steps=jnp.asarray(sol.stats["num_accepted_steps"]),
+        validity=flags,
     )
 
 

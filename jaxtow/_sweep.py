@@ -23,7 +23,7 @@ import jax.numpy as jnp
 import numpy as np
 from jax.sharding import Mesh, NamedSharding, PartitionSpec as P
 
-from ._dynamics import TowModel
+from ._dynamics import TowModel, all_valid, validity
 from ._equilibrium import analytic_equilibria, equilibria_fixed
 from ._parameters import check_values, with_parameters
 from ._progress import Progress
@@ -86,6 +86,9 @@ def point_kernel(
     )
     if routh_hurwitz:
         out["routh_hurwitz"] = jax.vmap(matrix_routh_hurwitz_stable)(J)
+    flags = jax.vmap(lambda y: validity(mdl, y))(eqs.state)  # per equilibrium slot
+    out.update({f"validity_{k}": v for k, v in flags.items()})
+    out["physics_valid"] = jax.vmap(all_valid)(flags)
     return out
 
 

@@ -47,6 +47,15 @@ class AbstractTowline(V.Checked):
     def length_at_tension(self, T) -> Float[Array, ""]:
         """Stretched length l' carrying tension T' > 0."""
 
+    def rescaled(self, factor) -> AbstractTowline:
+        """The same line with every non-dimensional force parameter multiplied by ``factor``
+        (a change of the force scale ½ρTLU²: `jaxtow.at_tug_speed` passes (U_old/U_new)²).
+        A towline law must implement it to be used at another tug speed."""
+        raise NotImplementedError(
+            f"{type(self).__name__} does not define 'rescaled', so the tug speed cannot be "
+            "changed for it; implement rescaled(factor) (stiffness' times factor)"
+        )
+
 
 #: The rules of the attachment point (shared by every towline).
 XP_RULE = V.in_range(*XP_RANGE)
@@ -72,6 +81,9 @@ class Towline(AbstractTowline):
     def length_at_tension(self, T):
         return self.l0 * (1.0 + T / self.EA)
 
+    def rescaled(self, factor):
+        return eqx.tree_at(lambda t: t.EA, self, self.EA * factor)
+
 
 class PowerLawTowline(AbstractTowline):
     """Bernitsas & Kekridis synthetic-line law, thesis eq. 2.22: T' = Sb' (l'/l0' − 1)^q.
@@ -96,6 +108,9 @@ class PowerLawTowline(AbstractTowline):
         Tpos = T > 0.0
         safe = jnp.where(Tpos, T, 1.0)
         return self.l0 * (1.0 + jnp.where(Tpos, (safe / self.Sb) ** (1.0 / self.q), 0.0))
+
+    def rescaled(self, factor):
+        return eqx.tree_at(lambda t: t.Sb, self, self.Sb * factor)
 
 
 class Bridle(eqx.Module):

@@ -8,31 +8,39 @@ periods only at the user boundary (CLI, plots).
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
+import equinox as eqx
 import jax.numpy as jnp
+from jaxtyping import Array, Float
+
+from ._rules import POSITIVE, Checked, rule_field
 
 G = 9.80665  # m/s², standard gravity
 RHO_SEA = 1025.0  # kg/m³, sea-water density used throughout the thesis
 
 
-@dataclasses.dataclass(frozen=True)
-class Scales:
+def _float(x):
+    return jnp.asarray(x, dtype=float)
+
+
+class Scales(Checked):
     """Reference scales of the tow model.
 
-    length: L [m]; draft: T [m]; u_tug: U_tug [m/s]; rho: water density [kg/m³].
+    length: L [m]; draft: T [m]; rho: water density [kg/m³] (static: they fix the model's
+    structure); u_tug: U_tug [m/s], a traced value, so that the tug speed can be swept and
+    differentiated (`jaxtow.at_tug_speed`).
     """
 
-    length: float
-    draft: float
-    u_tug: float
-    rho: float = RHO_SEA
+    length: float = eqx.field(static=True)
+    draft: float = eqx.field(static=True)
+    u_tug: Float[Array, ""] = rule_field(rule=POSITIVE, converter=_float)
+    rho: float = eqx.field(static=True, default=RHO_SEA)
 
-    def __post_init__(self):
-        for name in ("length", "draft", "u_tug", "rho"):
+    def __check_init__(self):
+        for name in ("length", "draft", "rho"):
             val = getattr(self, name)
-            if not (math.isfinite(val) and val > 0):
+            if not (isinstance(val, (int, float)) and math.isfinite(val) and val > 0):
                 raise ValueError(f"parameter {name!r} must be finite and > 0, got {val!r}")
 
     @property
@@ -46,12 +54,12 @@ class Scales:
         return 0.5 * self.rho * self.draft * self.length**4
 
     @property
-    def force(self) -> float:
+    def force(self) -> Float[Array, ""]:
         """½ρTLU² [N] (thesis eqs 6.14, 6.15)."""
         return 0.5 * self.rho * self.draft * self.length * self.u_tug**2
 
     @property
-    def moment(self) -> float:
+    def moment(self) -> Float[Array, ""]:
         """½ρTL²U² [N m] (thesis eq. 6.16)."""
         return self.force * self.length
 
@@ -62,12 +70,12 @@ class Scales:
         return jnp.stack([load[0] / self.force, load[1] / self.force, load[2] / self.moment])
 
     @property
-    def time(self) -> float:
+    def time(self) -> Float[Array, ""]:
         """L/U_tug [s]."""
         return self.length / self.u_tug
 
     @property
-    def froude(self) -> float:
+    def froude(self) -> Float[Array, ""]:
         """Froude number U_tug/sqrt(gL) (the wave-drift methods are valid for Fn < 0.15)."""
         return froude_number(self.u_tug, self.length)
 

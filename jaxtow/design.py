@@ -352,8 +352,9 @@ def _external_parameters(model: TowModel) -> tuple:
 
 def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None = None, psi0=0.0):
     """∂(max Re λ)/∂p of the straight-behind equilibrium for every parameter p (default:
-    all vessel fields, the towline's fields, and the scalar fields of the external force,
-    e.g. a wave amplitude, named ``external.<field>``), by one reverse pass per point;
+    all vessel fields, the towline's fields, the scalar fields of the external force,
+    e.g. a wave amplitude, named ``external.<field>``, and the tug speed ``u_tug`` when the
+    model has reference scales), by one reverse pass per point;
     vmapped over a ``sweep`` (dict name → values, one parameter). Returns (names, values
     (n_sweep, n_par), gradients (n_sweep, n_par), abscissa (n_sweep,), sweep values)."""
     line = tuple(
@@ -362,7 +363,10 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
         if isinstance(getattr(model.towline, f), jax.Array)
     )
     ext = tuple(f"external.{f}" for f in _external_parameters(model))
-    names = tuple(parameters) if parameters is not None else tuple(VESSEL_PARAMETERS) + line + ext
+    tug = ("u_tug",) if model.reference_scales is not None else ()
+    names = (
+        tuple(parameters) if parameters is not None else tuple(VESSEL_PARAMETERS) + line + ext + tug
+    )
 
     def one(m):
         x = jnp.stack([jnp.asarray(get_parameter(m, n), float) for n in names])

@@ -278,7 +278,7 @@ def steel_wire_EA_nd(
 ) -> float:
     """EA' = EA / (½ρTLU²) of the documented steel wire towline on Barge 2."""
     EA = ASSUMPTIONS["EA"]["value"] if EA is None else EA
-    return EA / barge2_scales(u_tug, draft).force
+    return float(EA / barge2_scales(u_tug, draft).force)
 
 
 def default_towline(
@@ -315,12 +315,14 @@ def barge2_resistance(
     qtf: QTF | None = None,
     draft: float | None = None,
     omega=None,
+    form: str = "aranha",
 ) -> TowResistance:
     """Barge 2 (thesis section 7.1-7.2): current/calm-water load from the manoeuvring
     derivatives of version ``2a`` or ``2b`` (fig. 7.1b), wind from ``wind_table`` (default
     the ILLUSTRATIVE table) on H = ``wind_height`` (default the ILLUSTRATIVE 10 m), mean
-    wave drift from the Barge 2 waterline by ``method`` or from a panel ``qtf``. The
-    returned ``assumed`` lists every estimate the numbers depend on."""
+    wave drift from the Barge 2 waterline by ``method`` or from a panel ``qtf`` (with the
+    forward-speed ``form`` of `jaxtow.drift.sailing_drift`). The returned ``assumed`` lists
+    every estimate the numbers depend on."""
     from .drift import barge2_waterline
     from .resistance import RHO_AIR, ManoeuvringCoefficients, OCIMFLoad, TowResistance, WaveDrift
 
@@ -334,7 +336,7 @@ def barge2_resistance(
     hull = OCIMFLoad(ManoeuvringCoefficients(vessel, L, B), RHO_SEA, L, B, T)
     wind = OCIMFLoad(table, RHO_AIR, L, B, H)
     waves = (
-        WaveDrift(qtf=qtf, omega=omega)
+        WaveDrift(qtf=qtf, omega=omega, form=form)
         if qtf is not None
         else WaveDrift(barge2_waterline(draft), method=method, omega=omega)
     )

@@ -49,11 +49,13 @@ def approximate_qtf(method: str = "kashiwagi", draft=None):
 
 
 def _barge2_tow(version, l0, xp, u_tug, external) -> TowModel:
-    """Barge 2a/2b on the documented steel towline with an environmental force."""
+    """Barge 2a/2b on the documented steel towline with an environmental force, carrying its
+    reference scales (so ``u_tug`` can be swept, `jaxtow.at_tug_speed`)."""
     return TowModel(
         vessel=presets.VESSELS[f"barge_{version}"](),
         towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug),
         external=external,
+        scales=presets.barge2_scales(u_tug),
     )
 
 
@@ -67,13 +69,17 @@ def barge2_wave_model(
     qtf=None,
     u_tug: float = presets.U_TUG_DEFAULT,
     wind=None,
+    form: str = "aranha",
 ) -> TowModel:
     """Barge 2a/2b on the documented steel towline in regular head waves (ω [rad/s], ζa [m])
     at tug speed ``u_tug`` (thesis chapter 6.2 base: x_p' = 0.5, ζa = 1.2-1.25 m, 2 m/s);
     ``wind``: an optional `jaxtow.forces.WindForce` added to the waves (thesis 7.2.2).
-    Sweep ω and ζa as ``external.omega`` / ``external.zeta_a`` (without wind)."""
+    Sweep ω and ζa as ``external.omega`` / ``external.zeta_a`` (without wind), the tug speed
+    as ``u_tug``. ``form``: the forward-speed form of the drift (`jaxtow.drift.sailing_drift`)."""
     q = approximate_qtf() if qtf is None else qtf
-    waves = WaveDriftForce(qtf=q, omega=omega, zeta_a=zeta_a, scales=presets.barge2_scales(u_tug))
+    waves = WaveDriftForce(
+        qtf=q, omega=omega, zeta_a=zeta_a, scales=presets.barge2_scales(u_tug), form=form
+    )
     ext = waves if wind is None else CombinedForce((waves, wind))
     return _barge2_tow(version, l0, xp, u_tug, ext)
 
@@ -88,13 +94,18 @@ def barge2_irregular_model(
     qtf=None,
     u_tug: float = presets.U_TUG_DEFAULT,
     omega=None,
+    form: str = "aranha",
 ) -> TowModel:
     """Barge 2a/2b in an irregular head sea (JONSWAP Hs, Tp; mean drift, thesis 6.3); sweep Tp
     as ``external.spectrum.tp``. ``omega``: integration grid (default `jaxtow.waves.DEFAULT_OMEGA`)."""
     q = approximate_qtf() if qtf is None else qtf
     w = np.asarray(DEFAULT_OMEGA if omega is None else omega, float)
     force = IrregularWaveDriftForce(
-        qtf=q, spectrum=Jonswap(hs=hs, tp=tp), omega=w, scales=presets.barge2_scales(u_tug)
+        qtf=q,
+        spectrum=Jonswap(hs=hs, tp=tp),
+        omega=w,
+        scales=presets.barge2_scales(u_tug),
+        form=form,
     )
     return _barge2_tow(version, l0, xp, u_tug, force)
 

@@ -31,6 +31,7 @@ def test_every_subcommand_has_help_with_an_output_option(module, capsys):
     assert f"usage: jaxtow {name}" in out and ("--out" in out or "--vessel" in out)
 
 
+@pytest.mark.slow
 def test_calm_writes_figures_datasets_summary(tmp_path, capsys):
     out = tmp_path / "res"
     main(

@@ -299,6 +299,7 @@ def test_irregular_short_wave_limit_and_tp_gradient(box):
     )  # less drift in longer seas
 
 
+@pytest.mark.slow
 def test_cli_drift_writes_figures_datasets_and_summary(tmp_path):
     import json
 

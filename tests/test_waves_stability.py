@@ -34,7 +34,7 @@ def test_wind_force_in_the_tow_model():
     X = float(wind(0.0, y, None)[0])
     cx = float(tow.wind.coefficients(0.0)[0])
     expected = (
-        0.5 * R.RHO_AIR * cx * (10.0 + sc.u_tug) ** 2 * 24.4 * 10.0 / sc.force
+        0.5 * R.RHO_AIR * cx * (10.0 + float(sc.u_tug)) ** 2 * 24.4 * 10.0 / float(sc.force)
     )  # eqs 2.23, 2.25
     assert X == pytest.approx(expected, rel=1e-12)
     # head wind adds to the towline tension of the straight-behind equilibrium, by exactly its drag
@@ -113,3 +113,12 @@ def test_report_waves_writes_claims(tmp_path, capsys):
     assert (tmp_path / "barge_2a_map_l0_omega.png").is_file()
     ds = jt.io.load_dataset(tmp_path / "barge_2a_map_l0_omega.nc")
     assert "APPROXIMATE" in ds.attrs["drift_source"]
+    assert ds.attrs["sailing_form"] == "aranha"
+    assert "validity_no_separation" in ds and "physics_valid" in ds
+    for v in ("2a", "2b"):
+        assert (tmp_path / f"barge_{v}_map_utug_omega.png").is_file()
+        assert (tmp_path / f"barge_{v}_heading_utug_omega.png").is_file()
+    tug = jt.io.load_dataset(tmp_path / "barge_2a_map_utug_omega.nc")
+    assert tug["u_tug"].values.min() == 1.0 and tug["u_tug"].values.max() == 3.0
+    summary = json.loads((tmp_path / "summary.json").read_text())
+    assert 0.0 <= summary["validity_share"]["barge_2a_map_l0_omega"]["physics_valid"] <= 1.0

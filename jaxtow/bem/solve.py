@@ -572,7 +572,9 @@ def qtf_from_bem(ds, method: str = "far_field", *, symmetric: bool = False):
     """A jaxtow `QTF` (SI, per ζa²) from a `bem_drift` dataset; ``method`` 'far_field' or
     'near_field'. ``symmetric=True`` (a port-starboard symmetric hull with β from 0) completes
     the table to negative headings with `QTF.symmetric`, setting the head-sea (and
-    following-sea) sway and yaw, which vanish by symmetry, to exactly zero."""
+    following-sea) sway and yaw, which vanish by symmetry, to exactly zero. The sectional
+    moments (M_x,1, M_y,1, M_y,2) of the pressure integration (``sectional_moments``) come
+    with the table, for the yaw-rate wave-drift damping (`jaxtow.drift.yaw_rate_damping`)."""
     from ..drift._qtf import QTF
 
     if method not in ("far_field", "near_field"):
@@ -580,12 +582,19 @@ def qtf_from_bem(ds, method: str = "far_field", *, symmetric: bool = False):
     v = np.asarray(ds[method].transpose("omega", "beta", "component"))
     w, b = np.asarray(ds.omega, float), np.asarray(ds.beta, float)
     fx, fy, nz = v[..., 0], v[..., 1].copy(), v[..., 2].copy()
+    sec = None
+    if "sectional_moments" in ds:
+        sm = ds["sectional_moments"].transpose("omega", "beta", "axis", "order")
+        sec = [
+            np.asarray(sm.sel(axis=a, order=k), float).copy()
+            for a, k in (("x", 1), ("y", 1), ("y", 2))
+        ]
     if symmetric:
         for j in np.flatnonzero(np.isclose(b, 0.0) | np.isclose(np.abs(b), math.pi)):
-            fy[:, j] = 0.0
-            nz[:, j] = 0.0
-        return QTF.symmetric(omega=w, beta=b, fx=fx, fy=fy, nz=nz)
-    return QTF(omega=w, beta=b, fx=fx, fy=fy, nz=nz)
+            for arr in [fy, nz] + (sec[1:] if sec else []):
+                arr[:, j] = 0.0
+        return QTF.symmetric(omega=w, beta=b, fx=fx, fy=fy, nz=nz, sectional=sec)
+    return QTF(omega=w, beta=b, fx=fx, fy=fy, nz=nz, sectional=sec)
 
 
 def qtf_attrs(ds, method: str) -> dict:

@@ -99,7 +99,17 @@ def _time_domain(model, vname, args, out: Path) -> dict:
     save(plot_time_traces(traj, title), out / f"{vname}_time_traces.png")
     save(plot_phase_portraits(traj, title), out / f"{vname}_phase_portraits.png")
     save(plot_force_history(force_history(model, sim), title), out / f"{vname}_forces.png")
-    np.savez(out / f"{vname}_run.npz", t=np.asarray(sim.ts), y=np.asarray(sim.ys))
+    flags = {k: np.asarray(v) for k, v in sim.validity.items()}
+    np.savez(
+        out / f"{vname}_run.npz",
+        t=np.asarray(sim.ts),
+        y=np.asarray(sim.ys),
+        **{f"validity_{k}": v for k, v in flags.items()},
+    )
+    finite = np.all(np.isfinite(np.asarray(sim.ys)), axis=-1)
+    share = {
+        k: float(np.mean(v[finite])) for k, v in flags.items() if v.dtype == bool and finite.any()
+    }
     w = met["path_width"]
     print(
         f"{vname} time domain: {met['outcome']}; path width {w if w is None else round(w, 3)} L, "
@@ -108,7 +118,7 @@ def _time_domain(model, vname, args, out: Path) -> dict:
         f"heading damping {met['damping']['zeta'] and round(met['damping']['zeta'], 4)} ({met['damping']['method']})"
         + (f"; ENDED EARLY at t'={met['t_end']:.1f}" if met["ended_early"] else "")
     )
-    return met | dict(n_steps=int(sim.n_steps))
+    return met | dict(n_steps=int(sim.n_steps), validity_share_of_run=share)
 
 
 def _time_domain_options(p, t1_default=400.0):

@@ -33,6 +33,22 @@ def _straight(ds, field="max_real"):
     return nearest_straight({k: ds[k].values for k in ("valid", "psi", field)}, field)
 
 
+def _invalid(ds):
+    """Where the equilibrium nearest straight behind is outside the physics' validity."""
+    return _straight(ds, "physics_valid") == 0.0
+
+
+def _validity_share(ds) -> dict:
+    """Share of the map points (with a straight-behind equilibrium) that meet each flag."""
+    out = {}
+    for k in ds.data_vars:
+        if (k.startswith("validity_") and ds[k].dtype == bool) or k == "physics_valid":
+            v = _straight(ds, k)
+            has = np.isfinite(v)
+            out[k.removeprefix("validity_")] = float(np.mean(v[has] == 1.0)) if has.any() else None
+    return out
+
+
 def cmd_report(args):
 
     from .. import presets
@@ -66,28 +82,29 @@ def cmd_report(args):
     else:
         qtf, source = approximate_qtf(), APPROXIMATE_QTF
 
-    za, n = args.zeta_a, args.n
+    za, n, form = args.zeta_a, args.n, args.form
     l0 = np.linspace(0.3, 3.0, n)
     omega = np.linspace(0.3, 2.0, n)
-    claims, summary = (
-        [],
-        dict(
-            drift_source=source,
-            zeta_a=za,
-            u_tug=presets.U_TUG_DEFAULT,
-            xp=0.5,
-            assumptions={k: v["note"] for k, v in presets.ASSUMPTIONS.items()},
-        ),
+    claims: list = []
+    summary: dict = dict(
+        drift_source=source,
+        zeta_a=za,
+        u_tug=presets.U_TUG_DEFAULT,
+        xp=0.5,
+        sailing_form=form,
+        assumptions={k: v["note"] for k, v in presets.ASSUMPTIONS.items()},
     )
-    attrs = dict(drift_source=source)
+    attrs = dict(drift_source=source, sailing_form=form)
+    validity = summary.setdefault("validity_share", {})
 
     # --- (l0', omega) stability maps, with the calm reference (figs 6.17-6.19) -------------
     maps, calm = {}, {}
     for v in ("2a", "2b"):
-        m = barge2_wave_model(v, omega=1.0, zeta_a=za, qtf=qtf)
+        m = barge2_wave_model(v, omega=1.0, zeta_a=za, qtf=qtf, form=form)
         ds = _map(m, {"l0": l0, "external.omega": omega}, progress, args.n_grid).assign_attrs(attrs)
         save_dataset(ds, out / f"barge_{v}_map_l0_omega.nc")
         maps[v] = _straight(ds)
+        validity[f"barge_{v}_map_l0_omega"] = _validity_share(ds)
         cds = _map(m.__class__(vessel=m.vessel, towline=m.towline), {"l0": l0}, False, args.n_grid)
         calm[v] = _straight(cds)
         save(
@@ -98,6 +115,7 @@ def cmd_report(args):
                 title=f"Barge {v}: max Re lambda, straight behind, "
                 f"zeta_a = {za} m (figs 6.17-6.19)",
                 note=source,
+                invalid=_invalid(ds),
             ),
             out / f"barge_{v}_map_l0_omega.png",
         )
@@ -126,7 +144,7 @@ def cmd_report(args):
     zs = np.linspace(0.05, 2.5, max(n // 2, 6))
     extra = {}
     for v in ("2a", "2b"):
-        m = barge2_wave_model(v, omega=1.0, zeta_a=za, qtf=qtf)
+        m = barge2_wave_model(v, omega=1.0, zeta_a=za, qtf=qtf, form=form)
         ds = _map(
             m, {"external.zeta_a": zs, "external.omega": omega}, progress, args.n_grid
         ).assign_attrs(attrs)
@@ -164,15 +182,48 @@ def cmd_report(args):
                 _straight(ds, "psi"),
                 "zeta_a [m]",
                 title=f"Barge {v}: heading of the equilibrium nearest straight behind",
+                invalid=_invalid(ds),
             ),
             out / f"barge_{v}_heading_zeta_omega.png",
         )
     claims.append(W.small_waves_add_no_equilibria(extra, source=source))
 
+    # --- tug speed: (U_tug, omega) maps of heading and max Re lambda at l0' = 2.5 -----------
+    speeds = np.linspace(1.0, 3.0, max(n // 2, 6))
+    for v in ("2a", "2b"):
+        m = barge2_wave_model(v, l0=2.5, omega=1.0, zeta_a=za, qtf=qtf, form=form)
+        ds = _map(m, {"u_tug": speeds, "external.omega": omega}, progress, args.n_grid)
+        ds = ds.assign_attrs(attrs)
+        save_dataset(ds, out / f"barge_{v}_map_utug_omega.nc")
+        validity[f"barge_{v}_map_utug_omega"] = _validity_share(ds)
+        save(
+            plot_max_real_map(
+                speeds,
+                omega,
+                _straight(ds),
+                xlabel="U_tug [m/s]",
+                title=f"Barge {v}: max Re lambda over tug speed, l0' = 2.5, zeta_a = {za} m",
+                note=source,
+                invalid=_invalid(ds),
+            ),
+            out / f"barge_{v}_map_utug_omega.png",
+        )
+        save(
+            plot_heading_map(
+                speeds,
+                omega,
+                _straight(ds, "psi"),
+                "U_tug [m/s]",
+                title=f"Barge {v}: heading nearest straight behind over tug speed",
+                invalid=_invalid(ds),
+            ),
+            out / f"barge_{v}_heading_utug_omega.png",
+        )
+
     # --- heading over (xp', omega) (fig. 6.13) ------------------------------------------------
     xps = np.linspace(0.05, 1.0, n)
     ds = _map(
-        barge2_wave_model("2a", omega=1.0, zeta_a=za, qtf=qtf),
+        barge2_wave_model("2a", omega=1.0, zeta_a=za, qtf=qtf, form=form),
         {"xp": xps, "external.omega": omega},
         progress,
         args.n_grid,
@@ -194,12 +245,13 @@ def cmd_report(args):
     tps = np.linspace(lo, hi, max(n // 2, 6))
     irr = {}
     for v in ("2a", "2b"):
-        m = barge2_irregular_model(v, hs=args.hs, tp=0.5 * (lo + hi), qtf=qtf)
+        m = barge2_irregular_model(v, hs=args.hs, tp=0.5 * (lo + hi), qtf=qtf, form=form)
         ds = _map(m, {"l0": l0, "external.spectrum.tp": tps}, progress, args.n_grid).assign_attrs(
             attrs
         )
         save_dataset(ds, out / f"barge_{v}_map_l0_tp.nc")
         irr[v] = _straight(ds)
+        validity[f"barge_{v}_map_l0_tp"] = _validity_share(ds)
         save(
             plot_max_real_map(
                 l0,
@@ -208,11 +260,12 @@ def cmd_report(args):
                 ylabel="Tp [s]",
                 title=f"Barge {v}: max Re lambda, Hs = {args.hs} m (fig. 6.26)",
                 note=source,
+                invalid=_invalid(ds),
             ),
             out / f"barge_{v}_map_l0_tp.png",
         )
     ds = _map(
-        barge2_irregular_model("2a", hs=args.hs, tp=0.5 * (lo + hi), qtf=qtf),
+        barge2_irregular_model("2a", hs=args.hs, tp=0.5 * (lo + hi), qtf=qtf, form=form),
         {"xp": xps, "external.spectrum.tp": tps},
         progress,
         args.n_grid,
@@ -234,7 +287,9 @@ def cmd_report(args):
     # --- time domain: path widths (figs 6.20-6.22, 7.5) and linear agreement ------------------
     runs, widths = {}, {}
     for tag, w in (("calm", None), ("omega_1.0", 1.0), ("omega_1.5", 1.5)):
-        m = barge2_wave_model("2a", l0=2.5, omega=w or 1.0, zeta_a=za if w else 0.0, qtf=qtf)
+        m = barge2_wave_model(
+            "2a", l0=2.5, omega=w or 1.0, zeta_a=za if w else 0.0, qtf=qtf, form=form
+        )
         sim = simulate(m, initial_state(m, psi0=0.2, y0=0.1), t1=args.t1, n_save=2001)
         met = fishtail_metrics(m, sim)
         runs[tag], widths[tag] = (m, sim), float(met["path_width"])
@@ -243,7 +298,7 @@ def cmd_report(args):
 
     extra_runs = {
         f"irregular Hs = {args.hs} m, Tp = 7 s": barge2_irregular_model(
-            "2a", l0=2.5, hs=args.hs, tp=7.0, qtf=qtf
+            "2a", l0=2.5, hs=args.hs, tp=7.0, qtf=qtf, form=form
         ),
         f"wind {args.wind:g} m/s (ILLUSTRATIVE table)": barge2_wave_model(
             "2a",
@@ -295,7 +350,7 @@ def _linear_agreement(maps, l0, omega, za, qtf, args, margin: float = 0.02, per_
         if ii.size:
             k = rng.choice(ii.size, size=min(per_side, ii.size), replace=False)
             picks += [(int(ii[q]), int(jj[q]), sign) for q in k]
-    base = barge2_wave_model("2a", omega=1.0, zeta_a=za, qtf=qtf)
+    base = barge2_wave_model("2a", omega=1.0, zeta_a=za, qtf=qtf, form=args.form)
     rows, ok = [], 0
     for i, j, sign in picks:
         m = with_parameters(base, l0=float(l0[i]), **{"external.omega": float(omega[j])})
@@ -354,6 +409,14 @@ def add_parser(sub):
         type=float,
         default=10.0,
         help="head-wind speed of the wind run [m/s] (thesis: 10)",
+    )
+    r.add_argument(
+        "--form",
+        choices=("aranha", "linear", "thesis"),
+        default="aranha",
+        help="forward-speed form of the drift (jaxtow.drift.sailing_drift): Aranha's finite "
+        "form (default), its linearisation, or the thesis's reading (counts the "
+        "encounter-frequency shift twice)",
     )
     r.add_argument("--quiet", action="store_true", help="no progress bars")
     r.set_defaults(func=cmd_report)

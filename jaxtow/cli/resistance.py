@@ -14,7 +14,7 @@ from ._config import config_dispatch, read_config as _read_config
 NM = 1852.0  # m
 TONNE_FORCE = 9.80665e3  # N
 BUILTIN = {"barge2": "resistance_barge2.toml"}
-_TOW_KEYS = {"vessel", "wave_drift", "wind_table", "wind_height", "heading_deg"}
+_TOW_KEYS = {"vessel", "wave_drift", "sailing_form", "wind_table", "wind_height", "heading_deg"}
 _TUG_KEYS = {
     "bollard_pull_t",
     "free_speed",
@@ -93,6 +93,7 @@ def build(cfg: dict):
         kw["method"] = drift
     else:
         kw["qtf"] = _qtf(drift)
+        kw["form"] = tow_c.get("sailing_form", "aranha")
     if "wind_table" in tow_c:
         kw["wind_table"] = _wind_table(tow_c["wind_table"])
     tow = presets.barge2_resistance(vessel.split("_")[1], **kw)

@@ -8,7 +8,14 @@ from ._compare import (
     relative_mse as relative_mse,
     relative_mse_by_zone as relative_mse_by_zone,
 )
-from ._damping import wave_drift_damping as wave_drift_damping
+from ._damping import (
+    TAU_MAX as TAU_MAX,
+    aranha as aranha,
+    encounter_frequency as encounter_frequency,
+    sailing_validity as sailing_validity,
+    wave_drift_damping as wave_drift_damping,
+    yaw_rate_damping as yaw_rate_damping,
+)
 from ._methods import (
     FROUDE_MAX as FROUDE_MAX,
     METHODS as METHODS,
@@ -28,7 +35,7 @@ from ._methods import (
 )
 from ._qtf import QTF as QTF
 from ._sailing import (
-    encounter_frequency as encounter_frequency,
+    FORMS as FORMS,
     irregular_sailing_drift as irregular_sailing_drift,
     sailing_drift as sailing_drift,
 )
@@ -48,7 +55,11 @@ __all__ = [
     "qtf_from_method",
     "relative_mse",
     "relative_mse_by_zone",
+    "TAU_MAX",
+    "aranha",
+    "sailing_validity",
     "wave_drift_damping",
+    "yaw_rate_damping",
     "FROUDE_MAX",
     "METHODS",
     "DriftEstimate",
@@ -66,6 +77,7 @@ __all__ = [
     "zone",
     "QTF",
     "encounter_frequency",
+    "FORMS",
     "irregular_sailing_drift",
     "sailing_drift",
     "Waterline",

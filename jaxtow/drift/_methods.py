@@ -39,7 +39,7 @@ import jax.numpy as jnp
 from .. import _rules as V
 from .._special import r_function
 from .._units import RHO_SEA, G
-from ._sailing import encounter_frequency
+from ._damping import encounter_frequency
 from ._waterline import Waterline
 
 #: Zone edges in L/λ (eq. 3.7): motion zone below the first, reflection zone above the

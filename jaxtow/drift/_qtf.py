@@ -41,14 +41,21 @@ class QTF(eqx.Module):
     `QTF.symmetric` from half a table of a port-starboard symmetric hull.
     ``q(omega, beta)`` returns (Fx, Fy, Nz) per ζa²; it is differentiable in ω, β and in the
     table values.
+
+    ``sectional`` (optional, a panel database's): the sectional drift moments
+    (M_x,1, M_y,1, M_y,2) per ζa² [N·m/m², N·m/m², N·m²/m²] on the same grid, shape
+    (3, nω, nβ) (thesis eqs 2.43-2.48: M_x,j = ∫ x^j f_x dx, M_y,j = ∫ x^j f_y dx, x from the
+    CoG). They give the yaw-rate column of the wave-drift damping
+    (`jaxtow.drift.yaw_rate_damping`); ``q.moments(omega, beta)`` interpolates them.
     """
 
     omega: Float[Array, " nw"]
     beta: Float[Array, " nb"]
     values: Float[Array, "3 nw nb"]
     periodic: bool = eqx.field(static=True)
+    sectional: Float[Array, "3 nw nb"] | None = None
 
-    def __init__(self, *, omega, beta, fx, fy, nz):
+    def __init__(self, *, omega, beta, fx, fy, nz, sectional=None):
         w = np.asarray(omega, float)
         b = np.asarray(beta, float)
         vals = np.stack([np.asarray(v, float) for v in (fx, fy, nz)])
@@ -69,6 +76,23 @@ class QTF(eqx.Module):
         scale = float(np.max(np.abs(vals))) if vals.size else 0.0
         if full and not np.allclose(vals[..., 0], vals[..., -1], rtol=1e-12, atol=1e-12 * scale):
             raise ValueError("a full-circle table must have equal values at beta = -pi and +pi")
+        if sectional is not None:
+            sec = np.stack([np.asarray(v, float) for v in sectional])
+            if sec.shape != vals.shape:
+                raise ValueError(
+                    "parameter 'sectional' must hold (M_x,1, M_y,1, M_y,2), each of shape "
+                    f"(len(omega), len(beta)) = {(w.size, b.size)}, got {sec.shape}"
+                )
+            if not np.all(np.isfinite(sec)):
+                raise ValueError("parameter 'sectional' must be finite")
+            if full and not np.allclose(sec[..., 0], sec[..., -1], rtol=1e-12, atol=0.0):
+                raise ValueError(
+                    "parameter 'sectional': a full-circle table must have equal values at "
+                    "beta = -pi and +pi"
+                )
+            self.sectional = jnp.asarray(sec)
+        else:
+            self.sectional = None
         self.omega, self.beta, self.values, self.periodic = (
             jnp.asarray(w),
             jnp.asarray(b),
@@ -76,10 +100,16 @@ class QTF(eqx.Module):
             full,
         )
 
+    @property
+    def has_sectional(self) -> bool:
+        """True when the table carries the sectional moments (the yaw-rate damping needs them)."""
+        return self.sectional is not None
+
     @classmethod
-    def symmetric(cls, *, omega, beta, fx, fy, nz):
+    def symmetric(cls, *, omega, beta, fx, fy, nz, sectional=None):
         """Complete a table given for 0 <= β <= βmax (radians) of a hull symmetric about its
-        centreline: Fx(−β) = Fx(β), Fy(−β) = −Fy(β), Nz(−β) = −Nz(β)."""
+        centreline: Fx(−β) = Fx(β), Fy(−β) = −Fy(β), Nz(−β) = −Nz(β); the sectional moments
+        (M_x,1, M_y,1, M_y,2), if given, have the same parities (even, odd, odd)."""
         b = np.asarray(beta, float)
         if b[0] != 0.0 or np.any(np.diff(b) <= 0):
             raise ValueError("parameter 'beta' must ascend from 0 for symmetry completion")
@@ -89,15 +119,23 @@ class QTF(eqx.Module):
         ) > 1e-9 * max(np.max(np.abs(nz)), 1e-300):
             raise ValueError("a symmetric hull has Fy = Nz = 0 in head seas (beta = 0)")
         bb = np.concatenate([-b[:0:-1], b])
-        fxx = np.concatenate([fx[:, :0:-1], fx], axis=1)
-        fyy = np.concatenate([-fy[:, :0:-1], fy], axis=1)
-        nzz = np.concatenate([-nz[:, :0:-1], nz], axis=1)
-        fyy[:, b.size - 1] = 0.0
-        nzz[:, b.size - 1] = 0.0
-        if abs(b[-1] - math.pi) < 1e-9:  # following seas: also zero by symmetry
-            fyy[:, [0, -1]] = 0.0
-            nzz[:, [0, -1]] = 0.0
-        return cls(omega=np.asarray(omega, float), beta=bb, fx=fxx, fy=fyy, nz=nzz)
+        following = abs(b[-1] - math.pi) < 1e-9
+
+        def complete(even, *odd):
+            out = [np.concatenate([even[:, :0:-1], even], axis=1)]
+            for v in odd:
+                vv = np.concatenate([-v[:, :0:-1], v], axis=1)
+                vv[:, b.size - 1] = 0.0
+                if following:  # following seas: also zero by symmetry
+                    vv[:, [0, -1]] = 0.0
+                out.append(vv)
+            return out
+
+        fxx, fyy, nzz = complete(fx, fy, nz)
+        sec = None
+        if sectional is not None:
+            sec = complete(*(np.asarray(v, float) for v in sectional))
+        return cls(omega=np.asarray(omega, float), beta=bb, fx=fxx, fy=fyy, nz=nzz, sectional=sec)
 
     def in_table(self, beta):
         """True where β lies inside the table's heading range (always for a full circle)."""
@@ -113,6 +151,16 @@ class QTF(eqx.Module):
         (for the two β-node slopes), each interpolated in ω on its bracketing interval
         (`jaxtow._interp.hermite_local`). The result equals the tensor-product interpolant of the
         module docstring built from the full slope tables."""
+        return self._interpolate(self.values, omega, beta)
+
+    def moments(self, omega, beta) -> Float[Array, "3"]:
+        """Sectional moments (M_x,1, M_y,1, M_y,2) per ζa² at one (ω, β), with the same
+        interpolant as the forces; zero when the table has none (`has_sectional`)."""
+        if self.sectional is None:
+            return jnp.zeros(3, dtype=jnp.result_type(self.values.dtype, omega, beta))
+        return self._interpolate(self.sectional, omega, beta)
+
+    def _interpolate(self, values, omega, beta):
         b, n = self.beta, self.beta.shape[0]
         w = jnp.concatenate([jnp.zeros(1, self.omega.dtype), self.omega])
         beta = jnp.asarray(beta)
@@ -130,7 +178,7 @@ class QTF(eqx.Module):
         jm, _ = neighbours(j)
         _, jpp = neighbours(j + 1)
         cols = jnp.stack([jm, j, j + 1, jpp])
-        sub = self.values[:, :, cols]  # (3, nw, 4): the four beta columns
+        sub = values[:, :, cols]  # (3, nw, 4): the four beta columns
 
         def take(rows):  # table rows at node indices of w (node 0 is the virtual ω = 0 row)
             r = sub[:, jnp.maximum(rows - 1, 0), :]  # (3, 4 rows, 4 cols)

@@ -1,4 +1,6 @@
-"""Forward speed: encounter frequency and sailing drift (thesis eqs 2.35, 2.36, 2.38, 5.1)."""
+"""Sailing drift: the mean drift of a vessel moving through waves (thesis eqs 2.35-2.42, 5.1;
+docs/model.md section 8). Every consumer (tow-model wave forces, irregular integrals, the
+resistance budget) goes through `sailing_drift`."""
 
 from __future__ import annotations
 
@@ -8,25 +10,18 @@ from jaxtyping import Array, ArrayLike, Float
 
 from .._units import G
 from ..waves._irregular import mean_drift
-from ._damping import wave_drift_damping
+from ._damping import aranha, encounter_frequency, wave_drift_damping, yaw_rate_damping
 from ._qtf import QTF
 
+#: The forward-speed forms of `sailing_drift`.
+FORMS = ("aranha", "linear", "thesis")
 
-def encounter_frequency(
-    omega0: ArrayLike, beta: ArrayLike, u: ArrayLike, v: ArrayLike = 0.0, *, g: float = G
-) -> Float[Array, "..."]:
-    """Encounter frequency ω_e = ω0 − k0 k̂·U = ω0 + (ω0²/g)(u cos β + v sin β) (eqs 2.35, 2.36).
 
-    jaxtow's β is the direction the waves come *from*, counter-clockwise from the bow, so
-    they travel along k̂ = (−cos β, −sin β) in body axes (the same convention as the QTF,
-    Aranha's damping in `wave_drift_damping`, the waterline methods and the WAMIT reader).
-    Head seas (β = 0) with u > 0 raise ω_e; so does swaying towards waves from port
-    (β = π/2, v > 0). The thesis prints eq. 2.35 with ``− v sin β``, i.e. with β measured the
-    other way round; with jaxtow's convention and the tow model's β = −ψ this form makes ω_e
-    independent of the barge heading, as it must be for waves from ahead of the tug.
-    """
-    omega0 = jnp.asarray(omega0)
-    return omega0 + omega0**2 / g * (u * jnp.cos(beta) + v * jnp.sin(beta))
+def check_form(form: str) -> str:
+    """A clear error naming ``form`` unless it is one of `FORMS`."""
+    if form not in FORMS:
+        raise ValueError(f"parameter 'form' must be one of {FORMS}, got {form!r}")
+    return form
 
 
 def sailing_drift(
@@ -37,17 +32,41 @@ def sailing_drift(
     v: ArrayLike = 0.0,
     r: ArrayLike = 0.0,
     *,
-    yaw_column: ArrayLike | None = None,
+    form: str = "aranha",
+    yaw_rate: bool = True,
     g: float = G,
 ) -> Float[Array, "3"]:
-    """Mean drift per ζa² of a vessel moving with (u, v, r) in waves of frequency ω0:
-    F(ω_e, β, 0) + B(ω_e, β)·(u, v, r) (eqs 2.38, 5.1); plotted against ω0 the curve
-    shifts to lower frequency because the vessel meets the waves at ω_e."""
-    we = encounter_frequency(omega0, beta, u, v, g=g)
-    B = wave_drift_damping(q, we, beta, yaw_column=yaw_column, g=g)
-    return q(we, beta) + B @ jnp.stack(
-        [jnp.asarray(u, float), jnp.asarray(v, float), jnp.asarray(r, float)]
-    )
+    """Mean drift (Fx, Fy, Nz) per ζa² of a vessel moving with (u, v, r) [m/s, m/s, rad/s] in
+    regular waves of absolute frequency ω0 from β.
+
+    ``form``:
+
+    * ``"aranha"`` (default): Aranha's finite form [1 + (4ω/g) U·ê] F(ω_e, β_e; 0) plus the
+      yaw-rate column B_·6(ω, β) r (`jaxtow.drift.aranha`);
+    * ``"linear"``: its linearisation F(ω, β) + B(ω, β)·(u, v, r) (eq. 2.38), no frequency
+      shift;
+    * ``"thesis"``: the thesis's reading F(ω_e, β) + B(ω_e, β)·(u, v, r) (eq. 2.38 with the
+      encounter frequency of eq. 5.1), which counts the encounter-frequency shift twice (the
+      ω ∂F/∂ω term of B is that shift); kept to reproduce the thesis.
+
+    ``yaw_rate=False`` drops the yaw-rate column (it is zero anyway when the table has no
+    sectional moments). Overtaken waves (ω_e ≤ 0) lie outside the model: the QTF is zero at
+    ω ≤ 0, so the drift there is zero; `sailing_validity` flags it.
+    """
+    check_form(form)
+    u, v, r = (jnp.asarray(x, float) for x in (u, v, r))
+    omega0 = jnp.asarray(omega0, float)
+    if form == "thesis":
+        we = encounter_frequency(omega0, beta, u, v, g=g)
+        B = wave_drift_damping(q, we, beta, g=g)
+        if not yaw_rate:
+            B = B.at[:, 2].set(0.0)
+        return q(we, beta) + B @ jnp.stack([u, v, r])
+    col_r = yaw_rate_damping(q, omega0, beta, g=g) if yaw_rate else jnp.zeros(3)
+    if form == "linear":
+        B = wave_drift_damping(q, omega0, beta, g=g)
+        return q(omega0, beta) + B[:, :2] @ jnp.stack([u, v]) + col_r * r
+    return aranha(q, omega0, beta, u, v, g=g) + col_r * r
 
 
 def irregular_sailing_drift(
@@ -59,13 +78,15 @@ def irregular_sailing_drift(
     v: ArrayLike = 0.0,
     r: ArrayLike = 0.0,
     *,
-    yaw_column: ArrayLike | None = None,
+    form: str = "aranha",
+    yaw_rate: bool = True,
     g: float = G,
 ) -> Float[Array, "3"]:
     """Mean drift in an irregular sea with forward speed: 2 ∫ S(ω0) F_sail(ω0) dω0
-    (eq. 2.29 with the sailing drift of eqs 2.38, 5.1), per unit of the spectrum's scale.
-    ``omega`` is the wave-frequency grid of the spectrum ``S`` (see `jaxtow.waves`)."""
-    F = jax.vmap(lambda w: sailing_drift(q, w, beta, u, v, r, yaw_column=yaw_column, g=g))(
+    (eq. 2.29 with `sailing_drift` of the given ``form``), per unit of the spectrum's scale.
+    ``omega`` is the absolute wave-frequency grid of the spectrum ``S`` (see `jaxtow.waves`)."""
+    check_form(form)
+    F = jax.vmap(lambda w: sailing_drift(q, w, beta, u, v, r, form=form, yaw_rate=yaw_rate, g=g))(
         jnp.asarray(omega)
     )
     return mean_drift(omega, S, F)

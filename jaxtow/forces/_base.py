@@ -62,3 +62,15 @@ class CombinedForce(AbstractExternalForce):
         for f in self.forces:  # a static handful of forces
             out = out + f(t, y, model)
         return out
+
+    def validity(self, y) -> dict:
+        """The flags of every force, merged: a flag two forces share holds where it holds
+        for both (logical and); a shared number is taken from the first force."""
+        out: dict = {}
+        for f in self.forces:
+            for k, v in f.validity(y).items():
+                if k in out and jnp.asarray(v).dtype == bool:
+                    out[k] = out[k] & v
+                else:
+                    out.setdefault(k, v)
+        return out

@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import equinox as eqx
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
 from .. import _rules as V
 from .._units import Scales
-from ..resistance._flow import OCIMFLoad
+from ..resistance._flow import OCIMFLoad, relative_flow
 from ._base import AbstractExternalForce
 
 
@@ -27,7 +26,7 @@ class WindForce(AbstractExternalForce):
     load: OCIMFLoad
     speed: jnp.ndarray = V.rule_field(rule=V.NONNEGATIVE, converter=_float)
     angle: jnp.ndarray = V.rule_field(rule=V.FINITE, converter=_float, default=0.0)
-    scales: Scales = eqx.field(static=True, default=None)
+    scales: Scales = None  # type: ignore[assignment]  # required: checked below
 
     def __check_init__(self):
         if self.scales is None:
@@ -39,3 +38,12 @@ class WindForce(AbstractExternalForce):
 
     def __call__(self, t, y: Float[Array, "6"], model) -> Float[Array, "3"]:
         return self.scales.nondimensional(self.dimensional(y))
+
+    def validity(self, y: Float[Array, "6"]) -> dict:
+        """The relative wind the quasi-steady OCIMF load is evaluated at: speed [m/s] and the
+        angle it comes from relative to the bow [rad]. The coefficient table covers the
+        full circle, so the load itself has no validity limit to flag; the numbers let a
+        result show which part of the table it used."""
+        U = self.scales.u_tug
+        U2, alpha = relative_flow(y[0] * U, y[1] * U, self.speed, self.angle - y[5])
+        return dict(relative_wind_speed=jnp.sqrt(U2), relative_wind_angle=alpha)

@@ -32,6 +32,24 @@ VARIABLES = {
     "routh_hurwitz": ("1", "Routh-Hurwitz criterion: all eigenvalues in the left half-plane"),
     "n_equilibria": ("1", "number of equilibria found"),
     "truncated": ("1", "more equilibria exist than slots (raise max_roots)"),
+    "physics_valid": ("1", "every validity flag of the physics holds (validity_* variables)"),
+}
+#: name → (units, long_name) of the physics' validity variables (``validity_<name>``).
+VALIDITY_VARIABLES = {
+    "line_taut": ("1", "towline carries tension (not slack)"),
+    "froude": ("1", "Froude number U/sqrt(gL) of the vessel"),
+    "froude_ok": ("1", "Froude number below 0.15 (drift methods' range)"),
+    "separation_ratio": ("1", "U/(omega zeta_a) (regular) or U/(omega_p Hs/2) (irregular)"),
+    "no_separation": ("1", "separation ratio below 1 (no flow separation)"),
+    "encounter_frequency": ("rad s-1", "encounter frequency omega_e"),
+    "encounter_positive": ("1", "omega_e > 0 (the vessel does not overtake the waves)"),
+    "overtaken_energy": ("1", "fraction of the spectrum's m0 at omega_e <= 0"),
+    "tau": ("1", "tau = omega U / g (Aranha's expansion parameter)"),
+    "tau_ok": ("1", "tau below 1/4 (Aranha's formula)"),
+    "heading_in_table": ("1", "wave heading inside the QTF table"),
+    "yaw_rate_damping": ("1", "yaw-rate wave-drift damping included (sectional moments)"),
+    "relative_wind_speed": ("m s-1", "relative wind speed"),
+    "relative_wind_angle": ("rad", "relative wind angle from the bow"),
 }
 _FLOAT_MASKED = (
     "psi",
@@ -89,10 +107,14 @@ def sweep_dataset(model, arrays: dict, *, method: str) -> xr.Dataset:
             dims.append("equilibrium")
         if v.ndim > len(names) + 1:
             dims.append("mode")
-        if k in _FLOAT_MASKED:
+        masked = k in _FLOAT_MASKED or (k.startswith("validity_") and v.dtype.kind == "f")
+        if masked:
             mask = found if v.ndim == found.ndim else found[..., None]
             v = np.where(mask, v, np.nan)
-        units, long_name = VARIABLES.get(k, ("1", k))
+        if k.startswith("validity_"):
+            units, long_name = VALIDITY_VARIABLES.get(k[len("validity_") :], ("1", k))
+        else:
+            units, long_name = VARIABLES.get(k, ("1", k))
         ds[k] = (dims, v, {"units": units, "long_name": long_name})
     ds.attrs.update(model_attributes(model))
     ds.attrs["equilibrium_method"] = method

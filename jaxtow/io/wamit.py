@@ -85,6 +85,14 @@ def write_wamit_drift(
     Path(path).write_text("\n".join(lines) + "\n")
 
 
+#: The sectional drift moments a QTF dataset may carry (name, units, long name).
+SECTIONAL_VARIABLES = (
+    ("mx1", "N m m-2", "first moment of the sectional surge drift, M_x,1, per zeta_a^2"),
+    ("my1", "N m m-2", "first moment of the sectional sway drift, M_y,1, per zeta_a^2"),
+    ("my2", "N m2 m-2", "second moment of the sectional sway drift, M_y,2, per zeta_a^2"),
+)
+
+
 def qtf_to_dataset(q: QTF, attrs: dict | None = None):
     """A `QTF` as an xarray Dataset with units (jaxtow's own NetCDF format); ``attrs``
     (provenance: mesh, solver, versions) are stored with it."""
@@ -110,14 +118,22 @@ def qtf_to_dataset(q: QTF, attrs: dict | None = None):
             ),
         },
     )
+    if q.sectional is not None:
+        for i, (name, u, ln) in enumerate(SECTIONAL_VARIABLES):
+            ds[name] = (
+                ("omega", "beta"),
+                np.asarray(q.sectional[i]),
+                {"units": u, "long_name": ln},
+            )
     ds.attrs.update(attrs or {})
     ds.attrs["jaxtow_qtf"] = 1
     return ds
 
 
 def save_qtf(q: QTF, path, attrs: dict | None = None) -> None:
-    """NetCDF (``.nc``, with ``attrs``) or CSV (``.csv``: columns omega, beta, fx, fy, nz; SI;
-    ``attrs`` as ``#`` header lines) by extension."""
+    """NetCDF (``.nc``, with ``attrs`` and the sectional moments mx1, my1, my2 if the table
+    has them) or CSV (``.csv``: columns omega, beta, fx, fy, nz; SI; ``attrs`` as ``#``
+    header lines; no sectional moments) by extension."""
     path = Path(path)
     if path.suffix == ".csv":
         W, B = np.meshgrid(np.asarray(q.omega), np.asarray(q.beta), indexing="ij")
@@ -151,12 +167,15 @@ def load_qtf(path) -> QTF:
     import xarray as xr
 
     ds = xr.load_dataset(path)
+    names = [n for n, _, _ in SECTIONAL_VARIABLES]
+    sec = [ds[n].values for n in names] if all(n in ds for n in names) else None
     return QTF(
         omega=ds.omega.values,
         beta=ds.beta.values,
         fx=ds.fx.values,
         fy=ds.fy.values,
         nz=ds.nz.values,
+        sectional=sec,
     )
 
 

@@ -62,9 +62,12 @@ def plot_max_real_vs(ds, param: str, ax=None, title: str | None = None):
 
 
 def plot_stability_map(ds, x: str, y: str, branch: int = 0, ax=None, title: str | None = None):
-    """max Re λ of one branch over a 2-D parameter grid, with the stability boundary."""
+    """max Re λ of one branch over a 2-D parameter grid, with the stability boundary;
+    cross-hatched where the branch's equilibrium is outside the physics' validity (the
+    dataset's ``physics_valid``, present for sweeps with validity flags)."""
     ax = ax or plt.subplots(figsize=(6, 4.5))[1]
-    mr = ds["max_real"].where(ds["valid"] & (ds["branch"] == branch)).max("equilibrium")
+    on = ds["valid"] & (ds["branch"] == branch)
+    mr = ds["max_real"].where(on).max("equilibrium")
     mr = mr.transpose(y, x).values
     lim = np.nanmax(np.abs(mr)) if np.isfinite(mr).any() else 1.0
     pc = ax.pcolormesh(
@@ -73,6 +76,11 @@ def plot_stability_map(ds, x: str, y: str, branch: int = 0, ax=None, title: str 
     if np.isfinite(mr).any() and np.nanmin(mr) < 0 < np.nanmax(mr):
         ax.contour(ds[x].values, ds[y].values, mr, levels=[0.0], colors="k", linewidths=1)
     plt.colorbar(pc, ax=ax, label="max Re(lambda) [-]")
+    if "physics_valid" in ds:
+        from .waves_report import hatch_invalid
+
+        bad = (on & ~ds["physics_valid"].astype(bool)).any("equilibrium")
+        hatch_invalid(ax, ds[x].values, ds[y].values, bad.transpose(x, y).values)
     ax.set_xlabel(f"{x}' [-]")
     ax.set_ylabel(f"{y}' [-]")
     ax.set_title(title or f"{ds.attrs.get('vessel', '')}: {BRANCH_STYLE[branch][0]}", fontsize=9)

@@ -11,9 +11,29 @@ def _note(ax, note):
         ax.text(0.01, -0.16, note[:150], transform=ax.transAxes, fontsize=6, color="0.4", va="top")
 
 
-def plot_max_real_map(l0, y, max_real, *, ylabel="omega [rad/s]", title="", note=""):
+def hatch_invalid(ax, x, y, invalid, label="outside the model's validity (xx)"):
+    """Cross-hatch the points of a map where the physics' validity flags fail (``invalid``
+    (len(x), len(y)) boolean, e.g. ``~physics_valid`` of a sweep), with a legend entry."""
+    bad = np.asarray(invalid, dtype=float).T
+    if not np.any(bad > 0.5):
+        return
+    ax.contourf(x, y, bad, levels=[0.5, 1.5], hatches=["xx"], colors="none")
+    from matplotlib.patches import Patch
+
+    ax.legend(
+        handles=[Patch(facecolor="none", edgecolor="0.3", hatch="xx", label=label)],
+        loc="upper right",
+        fontsize=7,
+        framealpha=0.7,
+    )
+
+
+def plot_max_real_map(
+    l0, y, max_real, *, ylabel="omega [rad/s]", title="", note="", invalid=None, xlabel="l0' [-]"
+):
     """max Re λ of the straight-behind equilibrium over (l0', y), the stability boundary
-    (zero contour) in black; hatched where no such equilibrium exists."""
+    (zero contour) in black; hatched (//) where no such equilibrium exists and cross-hatched
+    (xx) where it lies outside the model's validity (``invalid``, see `hatch_invalid`)."""
     fig, ax = plt.subplots(figsize=(6.8, 5))
     z = np.asarray(max_real).T
     lim = float(np.nanmax(np.abs(z))) if np.isfinite(z).any() else 1.0
@@ -25,7 +45,9 @@ def plot_max_real_map(l0, y, max_real, *, ylabel="omega [rad/s]", title="", note
         ax.contourf(
             l0, y, np.isnan(z).astype(float), levels=[0.5, 1.5], hatches=["//"], colors="none"
         )
-    ax.set_xlabel("l0' [-]")
+    if invalid is not None:
+        hatch_invalid(ax, l0, y, invalid)
+    ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=9)
     _note(ax, note)
@@ -46,11 +68,14 @@ def plot_count_map(x, omega, count, *, title="", note=""):
     return fig
 
 
-def plot_heading_map(x, omega, psi, xlabel, *, ylabel="omega [rad/s]", title=""):
-    """Heading [deg] of the equilibrium nearest straight behind over (x, ω) (or (x, Tp))."""
+def plot_heading_map(x, omega, psi, xlabel, *, ylabel="omega [rad/s]", title="", invalid=None):
+    """Heading [deg] of the equilibrium nearest straight behind over (x, ω) (or (x, Tp)),
+    cross-hatched where it lies outside the model's validity (``invalid``)."""
     fig, ax = plt.subplots(figsize=(6.8, 5))
     cs = ax.pcolormesh(x, omega, np.degrees(np.asarray(psi)).T, cmap="coolwarm", shading="auto")
     plt.colorbar(cs, ax=ax, label="psi_eq [deg]")
+    if invalid is not None:
+        hatch_invalid(ax, x, omega, invalid)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=9)

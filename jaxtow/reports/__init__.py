@@ -1,6 +1,7 @@
 """Thesis claims as testable functions: each takes a study's arrays and returns one
 ``claims.json`` record (see ``jaxtow report waves``)."""
 
+from ._forms import forms_table as forms_table, sailing_forms as sailing_forms
 from ._waves import (
     BAND_OMEGA_MAX as BAND_OMEGA_MAX,
     LOW_OMEGA as LOW_OMEGA,
@@ -20,6 +21,8 @@ from ._waves import (
 )
 
 __all__ = [
+    "forms_table",
+    "sailing_forms",
     "BAND_OMEGA_MAX",
     "LOW_OMEGA",
     "PATH_WIDTH_FACTOR",

@@ -9,6 +9,7 @@ import jax.numpy as jnp
 from .._rules import POSITIVE
 from .._units import froude_number
 from ..drift import METHODS, QTF, Waterline, irregular_drift, irregular_sailing_drift
+from ..drift._sailing import check_form
 from ..waves import DEFAULT_OMEGA, jonswap
 from ._flow import OCIMFLoad
 from ._sea import SeaState
@@ -22,17 +23,26 @@ class WaveDrift(eqx.Module):
 
     Either a waterline method of `jaxtow.drift.METHODS` (``method``, ``waterline``, its keyword
     ``options``) or a panel/WAMIT mean-drift ``qtf`` (then the encounter frequency and
-    Aranha's wave-drift damping give the speed effect, eqs 2.35-2.41). ``omega`` is the
-    integration grid [rad/s] (default `jaxtow.waves.DEFAULT_OMEGA`)."""
+    Aranha's formula gives the speed effect, `jaxtow.drift.sailing_drift` with ``form``,
+    eqs 2.35-2.41). ``omega`` is the integration grid [rad/s] (default
+    `jaxtow.waves.DEFAULT_OMEGA`)."""
 
     waterline: Waterline | None
     qtf: QTF | None
     omega: jnp.ndarray
     method: str = eqx.field(static=True, default="kashiwagi")
     options: tuple = eqx.field(static=True, default=())
+    form: str = eqx.field(static=True, default="aranha")
 
     def __init__(
-        self, waterline=None, *, method: str = "kashiwagi", qtf=None, omega=None, options=None
+        self,
+        waterline=None,
+        *,
+        method: str = "kashiwagi",
+        qtf=None,
+        omega=None,
+        options=None,
+        form: str = "aranha",
     ):
         if (waterline is None) == (qtf is None):
             raise ValueError("WaveDrift needs exactly one of 'waterline' (with 'method') or 'qtf'")
@@ -44,11 +54,12 @@ class WaveDrift(eqx.Module):
         self.method = "qtf" if qtf is not None else method
         self.omega = jnp.asarray(DEFAULT_OMEGA if omega is None else omega, float)
         self.options = tuple(sorted((options or {}).items()))
+        self.form = check_form(form)
 
     def __call__(self, hs, tp, gamma, beta, u, v):
         if self.qtf is not None:
             S = jonswap(self.omega, hs=hs, tp=tp, gamma=gamma)
-            return irregular_sailing_drift(self.qtf, self.omega, S, beta, u, v, 0.0)
+            return irregular_sailing_drift(self.qtf, self.omega, S, beta, u, v, 0.0, form=self.form)
         return irregular_drift(
             self.method,
             self.waterline,
