@@ -301,6 +301,25 @@ def test_wave_sweep_carries_validity_and_tug_speed_sweep_matches_rebuilt():
             )
 
 
+@pytest.mark.slow
+def test_wind_sweep_carries_validity():
+    wind = jt.forces.WindForce(
+        load=jt.presets.barge2_resistance().wind, speed=10.0, scales=jt.presets.barge2_scales()
+    )
+    m = jt.TowModel(
+        vessel=jt.presets.barge_2b(),
+        towline=jt.presets.default_towline(l0=2.5),
+        external=wind,
+        scales=jt.presets.barge2_scales(),
+    )
+    ds = jt.sweep(m, {"l0": [2.0, 2.5], "u_tug": [1.0, 2.0]}, n_grid=201)
+    assert {"validity_relative_wind_speed", "validity_line_taut", "physics_valid"} <= set(ds)
+    straight = ds["found"].values & (np.abs(ds["psi"].values) < 1e-6)
+    rel = ds["validity_relative_wind_speed"].values  # head wind plus the tow's own speed
+    U = np.broadcast_to(ds["u_tug"].values[None, :, None], rel.shape)
+    np.testing.assert_allclose(rel[straight], 10.0 + U[straight], rtol=1e-9)
+
+
 def test_irregular_and_wind_forces_have_validity():
     m = jt.study.barge2_irregular_model("2a", hs=2.4, tp=7.0)
     y = jnp.array([1.0, 0.0, 0.0, 2.6, 0.0, 0.0])
