@@ -181,6 +181,7 @@ def test_wave_force_at_zero_speed_is_stationary_qtf(barge_2a):
         )
 
 
+@pytest.mark.slow
 def test_zero_amplitude_reproduces_calm_water(barge_2a):
     # one case with all three equilibria (compiling the wave-force model costs ~15 s a case)
     for v, xp in ((barge_2a, 0.3),):

@@ -134,6 +134,7 @@ _LARGE_SCRIPT = textwrap.dedent("""
 """)
 
 
+@pytest.mark.slow
 def test_large_batch_sweep_completes():
     """Regression: several batched LAPACK calls in one kernel (Hurwitz determinants via
     jnp.linalg.det) deadlocked XLA's CPU runtime on chunks of thousands of points. The
