@@ -171,7 +171,9 @@ def turning_drift(w, b, r, breadth):
 
 def test_yaw_rate_column_matches_a_turning_hull():
     """The slender-body column equals the finite-difference change of the sectional
-    finite form with the yaw rate (1e-3: the only approximation is the table interpolant)."""
+    finite form with the yaw rate (1e-3: the only approximation is the table interpolant).
+    The reference is the dimensional drift [N/m², N m/m²] per unit yaw rate [rad/s] of a
+    hull whose sections move at r x [m/s]: equality is also the check of the column's units."""
     breadth = 0.0  # slender limit: the construction's own assumption
     q = hull_tables(breadth)
     for w, b in ((0.7, 0.3), (1.1, -0.6), (0.9, 1.2)):
@@ -181,9 +183,6 @@ def test_yaw_rate_column_matches_a_turning_hull():
             (turning_drift(w, b, h, breadth) - turning_drift(w, b, -h, breadth)) / (2 * h)
         )
         np.testing.assert_allclose(col, fd, rtol=1e-3, atol=1e-3 * np.max(np.abs(fd)))
-        # units: B_·6 r is a force and a moment per ζa² (N/m², N m/m²)
-        F = np.asarray(q(w, b))
-        assert abs(col[1] * 0.01) < abs(F[1]) and abs(col[2] * 0.01) < abs(F[2]) * LENGTH
 
 
 def test_yaw_rate_column_symmetry_and_slender_limit():
