@@ -5,7 +5,7 @@ The same physics as jaxtow's `WaveDriftForce` tow model (thesis eqs 6.1-6.6, 6.1
 points, `scipy.optimize.fsolve` on the six steady-state equations from several starting
 headings, a central finite-difference Jacobian, `numpy.linalg.eigvals`; the QTF is the same
 cubic Hermite interpolant (ported to NumPy) and the forward-speed drift is Aranha's finite
-form (jaxtow's default).
+form (jaxtow's default), with the yaw-rate column when the table has sectional moments.
 """
 
 from __future__ import annotations
@@ -68,8 +68,7 @@ class NumpyQTF:
         return _hermite(self.b, along, _slopes(self.b, along, self.periodic), beta)
 
 
-def sailing_drift(q, omega0, beta, u, v):
-    """Aranha's finite form [1 + (4ω/g) U·ê] F(ω_e, β_e) (jaxtow's default; no yaw column)."""
+def _aranha(q, omega0, beta, u, v):
     c, s = math.cos(beta), math.sin(beta)
     along, across = u * c + v * s, -u * s + v * c
     we = omega0 + omega0**2 / G * along
@@ -77,11 +76,32 @@ def sailing_drift(q, omega0, beta, u, v):
     return (1 + 4 * omega0 * along / G) * q(we, be)
 
 
+def sailing_drift(q, omega0, beta, u, v, r=0.0, moments=None, h=1e-6):
+    """Aranha's finite form [1 + (4ω/g) U·ê] F(ω_e, β_e) (jaxtow's default) plus, with the
+    sectional ``moments`` table, the yaw-rate column r ∂_v(M_x1, M_y1, M_y2) (a central
+    difference here, autodiff in jaxtow)."""
+    F = _aranha(q, omega0, beta, u, v)
+    if moments is not None:
+        col = (_aranha(moments, omega0, beta, 0.0, h) - _aranha(moments, omega0, beta, 0.0, -h)) / (
+            2 * h
+        )
+        F = F + col * r
+    return F
+
+
 def vector_field(y, p):
     """Calm-water field plus the wave-drift force (non-dimensional, eqs 6.14-6.16)."""
     f = calm_field(y, p)
     U = p["u_tug"]
-    F = p["zeta_a"] ** 2 * sailing_drift(p["qtf"], p["omega"], -y[5], y[0] * U, y[1] * U)
+    F = p["zeta_a"] ** 2 * sailing_drift(
+        p["qtf"],
+        p["omega"],
+        -y[5],
+        y[0] * U,
+        y[1] * U,
+        y[2] * U / p["length"],
+        p.get("moments"),
+    )
     f[0] += F[0] / p["force"] / (p["m"] + p["a11"])
     f[1] += F[1] / p["force"] / (p["m"] + p["a22"])
     f[2] += F[2] / p["moment"] / (p["Izz"] + p["a66"])

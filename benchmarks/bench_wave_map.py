@@ -6,8 +6,10 @@ jaxtow computes the whole map (default 200 × 200 points) in one call: every equ
 bracketing the heading residual, Jacobians by autodiff, LAPACK eigenvalues. The NumPy loop
 is timed on a random subset of the same points (it would take hours on the full map) and the
 per-point costs are compared; on that subset the two must agree. JIT compile time is
-reported separately. Drift forces: the documented Kashiwagi-waterline QTF stand-in
-(`jaxtow.drift.qtf_from_method`) with Aranha's finite form for the forward speed.
+reported separately. Drift forces: the shipped Barge 2 near-field panel database
+(`jaxtow.drift.database`, with its sectional moments, so the yaw-rate column of the
+wave-drift damping is on in both codes) with Aranha's finite form for the forward speed;
+``--qtf standin`` for the Kashiwagi-waterline stand-in.
 
     python benchmarks/bench_wave_map.py [--n 200] [--subset 60] [--json out.json]
 """
@@ -44,10 +46,11 @@ def main(argv=None):
         default=401,
         help="heading-scan points over ±90° (401: 0.45° brackets, each root refined to machine precision)",
     )
+    ap.add_argument("--qtf", default=None, help="drift source (default: the shipped near field)")
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
 
-    model = barge2_wave_model("2a", l0=1.0, xp=0.5, omega=1.0, zeta_a=1.25)
+    model = barge2_wave_model("2a", l0=1.0, xp=0.5, omega=1.0, zeta_a=1.25, qtf=args.qtf)
     qtf = model.external.qtf
     l0 = np.linspace(0.3, 3.0, args.n)
     omega = np.linspace(0.3, 2.0, args.n)
@@ -78,11 +81,19 @@ def main(argv=None):
         EA=float(model.towline.EA),
         xp=float(model.towline.xp),
         zeta_a=1.25,
-        u_tug=sc.u_tug,
-        force=sc.force,
-        moment=sc.moment,
+        u_tug=float(sc.u_tug),
+        force=float(sc.force),
+        moment=float(sc.moment),
+        length=float(sc.length),
         qtf=NumpyQTF(
             np.asarray(qtf.omega), np.asarray(qtf.beta), np.asarray(qtf.values), qtf.periodic
+        ),
+        moments=(
+            NumpyQTF(
+                np.asarray(qtf.omega), np.asarray(qtf.beta), np.asarray(qtf.sectional), qtf.periodic
+            )
+            if qtf.has_sectional
+            else None
         ),
     )
     rng = np.random.default_rng(0)

@@ -53,6 +53,7 @@ __all__ = [
     "BARGE2_BREADTH",
     "U_TUG_DEFAULT",
     "ASSUMPTIONS",
+    "PLAUSIBLE_RANGES",
     "BARGE2_WIND_TABLE",
     "SEA_STATES",
     "ILLUSTRATIVE_TUG",
@@ -136,6 +137,61 @@ ASSUMPTIONS = {
         units="m",
         note="ILLUSTRATIVE above-water height of Barge 2 with deck cargo (about 1.1 m "
         "freeboard + 9 m cargo); the thesis's 'arbitrary deck load' is not given",
+    ),
+}
+
+#: Plausible ranges of the documented estimates, for the attribution of claims
+#: (`jaxtow.reports.attribute`): absolute ends for draft, CoG height, radii of gyration and
+#: roll damping; factors on the estimate for a11', a22', a66' and EA'.
+PLAUSIBLE_RANGES = {
+    "draft": dict(
+        low=4.0,
+        high=5.5,
+        units="m",
+        note="loaded draft of a 250 ft deck barge: 4-5 m, 5.5 m deep-loaded",
+    ),
+    "a11": dict(
+        low=0.4,
+        high=2.0,
+        units="x estimate",
+        note="surge added mass 2-10 % of the mass (Brix 1993)",
+    ),
+    "a22": dict(
+        low=0.7,
+        high=1.3,
+        units="x estimate",
+        note="scatter of the Clarke, Gedling & Hine (1983) regression, about +-30 % for a barge",
+    ),
+    "a66": dict(
+        low=0.7,
+        high=1.3,
+        units="x estimate",
+        note="scatter of the Clarke, Gedling & Hine (1983) regression, about +-30 % for a barge",
+    ),
+    "EA": dict(
+        low=0.5,
+        high=1.5,
+        units="x estimate",
+        note="rope modulus 0.8-1.2e11 Pa and 64-88 mm wires; the catenary of a long line "
+        "softens it further (low end)",
+    ),
+    "cog_z": dict(
+        low=8.0,
+        high=13.8,
+        units="m",
+        note="above the keel: a light deck cargo (8 m) to the CoG the thesis's chapter 7 quotes (13.8 m)",
+    ),
+    "radii_of_gyration": dict(
+        low=(0.30, 0.22, 0.22),
+        high=(0.40, 0.28, 0.28),
+        units="B, L, L",
+        note="the ends of Journee's ranges",
+    ),
+    "roll_damping": dict(
+        low=0.02,
+        high=0.10,
+        units="of critical",
+        note="bare barge (2 %) to bilge keels or skegs (10 %)",
     ),
 }
 
@@ -316,13 +372,14 @@ def barge2_resistance(
     draft: float | None = None,
     omega=None,
     form: str = "aranha",
+    drift_source: str | None = None,
 ) -> TowResistance:
     """Barge 2 (thesis section 7.1-7.2): current/calm-water load from the manoeuvring
     derivatives of version ``2a`` or ``2b`` (fig. 7.1b), wind from ``wind_table`` (default
     the ILLUSTRATIVE table) on H = ``wind_height`` (default the ILLUSTRATIVE 10 m), mean
     wave drift from the Barge 2 waterline by ``method`` or from a panel ``qtf`` (with the
-    forward-speed ``form`` of `jaxtow.drift.sailing_drift`). The returned ``assumed`` lists
-    every estimate the numbers depend on."""
+    forward-speed ``form`` of `jaxtow.drift.sailing_drift`; ``drift_source`` names it). The
+    returned ``assumed`` lists every estimate the numbers depend on, and the drift source."""
     from .drift import barge2_waterline
     from .resistance import RHO_AIR, ManoeuvringCoefficients, OCIMFLoad, TowResistance, WaveDrift
 
@@ -354,6 +411,8 @@ def barge2_resistance(
                 "drift in the motion zone (L/lambda < 1)",
             )
         )
+    else:
+        assumed.append(("wave_drift", f"{drift_source or 'user QTF'} ({form} sailing form)"))
     return TowResistance(
         hull=hull, wind=wind, waves=waves, name=f"barge_{version}", assumed=tuple(assumed)
     )

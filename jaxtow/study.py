@@ -2,12 +2,13 @@
 Barge 2 tow models with regular or irregular head-sea drift and wind, and reductions of
 sweep results (the equilibrium nearest straight behind).
 
-Drift forces: a panel-method QTF when one is given (``qtf=``, e.g. `jaxtow.io.read_wamit_drift`
-or the Capytaine pipeline); otherwise the documented stand-in `APPROXIMATE_QTF`, a QTF
-tabulated from a waterline method (`jaxtow.drift.qtf_from_method`, default Kashiwagi:
-Fujii-Takahashi diffraction, no motion-induced drift) — results built on it say so through
-``drift_source``. The thesis used Delfrac's near-field QTFs, so numbers differ where the
-motion-induced drift matters (L/λ < 1, ω below about 0.9 rad/s for Barge 2).
+Drift forces (``qtf=``, any spec of `jaxtow.drift.drift_source`): by default the shipped
+Barge 2 near-field panel database (`jaxtow.drift.database`, as the thesis's Delfrac
+near-field QTFs); ``"far_field"`` its far-field twin; ``"standin"`` the documented stand-in
+`APPROXIMATE_QTF`, a QTF tabulated from a waterline method (`jaxtow.drift.qtf_from_method`,
+default Kashiwagi: Fujii-Takahashi diffraction, no motion-induced drift, which matters where
+L/λ < 1, ω below about 0.9 rad/s for Barge 2); a `QTF` or a file. Results say which through
+``drift_source``.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ import numpy as np
 from . import presets
 from ._dynamics import TowModel
 from .drift._compare import qtf_from_method
+from .drift._database import drift_source
 from .drift._waterline import barge2_waterline
 from .forces import CombinedForce
 from .forces._waves import IrregularWaveDriftForce, WaveDriftForce
@@ -48,14 +50,15 @@ def approximate_qtf(method: str = "kashiwagi", draft=None):
     return qtf_from_method(method, barge2_waterline(draft), QTF_OMEGA, np.radians(QTF_BETA_DEG))
 
 
-def _barge2_tow(version, l0, xp, u_tug, external) -> TowModel:
+def _barge2_tow(version, l0, xp, u_tug, external, draft=None) -> TowModel:
     """Barge 2a/2b on the documented steel towline with an environmental force, carrying its
-    reference scales (so ``u_tug`` can be swept, `jaxtow.at_tug_speed`)."""
+    reference scales (so ``u_tug`` can be swept, `jaxtow.at_tug_speed`). ``draft`` [m]
+    overrides the documented estimate everywhere it enters (added masses, EA', scales)."""
     return TowModel(
-        vessel=presets.VESSELS[f"barge_{version}"](),
-        towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug),
+        vessel=presets.VESSELS[f"barge_{version}"](draft),
+        towline=presets.default_towline(l0=l0, xp=xp, u_tug=u_tug, draft=draft),
         external=external,
-        scales=presets.barge2_scales(u_tug),
+        scales=presets.barge2_scales(u_tug, draft),
     )
 
 
@@ -70,18 +73,19 @@ def barge2_wave_model(
     u_tug: float = presets.U_TUG_DEFAULT,
     wind=None,
     form: str = "aranha",
+    draft: float | None = None,
 ) -> TowModel:
     """Barge 2a/2b on the documented steel towline in regular head waves (ω [rad/s], ζa [m])
     at tug speed ``u_tug`` (thesis chapter 6.2 base: x_p' = 0.5, ζa = 1.2-1.25 m, 2 m/s);
     ``wind``: an optional `jaxtow.forces.WindForce` added to the waves (thesis 7.2.2).
     Sweep ω and ζa as ``external.omega`` / ``external.zeta_a`` (without wind), the tug speed
     as ``u_tug``. ``form``: the forward-speed form of the drift (`jaxtow.drift.sailing_drift`)."""
-    q = approximate_qtf() if qtf is None else qtf
+    q = drift_source(qtf)[0]
     waves = WaveDriftForce(
-        qtf=q, omega=omega, zeta_a=zeta_a, scales=presets.barge2_scales(u_tug), form=form
+        qtf=q, omega=omega, zeta_a=zeta_a, scales=presets.barge2_scales(u_tug, draft), form=form
     )
     ext = waves if wind is None else CombinedForce((waves, wind))
-    return _barge2_tow(version, l0, xp, u_tug, ext)
+    return _barge2_tow(version, l0, xp, u_tug, ext, draft)
 
 
 def barge2_irregular_model(
@@ -95,19 +99,20 @@ def barge2_irregular_model(
     u_tug: float = presets.U_TUG_DEFAULT,
     omega=None,
     form: str = "aranha",
+    draft: float | None = None,
 ) -> TowModel:
     """Barge 2a/2b in an irregular head sea (JONSWAP Hs, Tp; mean drift, thesis 6.3); sweep Tp
     as ``external.spectrum.tp``. ``omega``: integration grid (default `jaxtow.waves.DEFAULT_OMEGA`)."""
-    q = approximate_qtf() if qtf is None else qtf
+    q = drift_source(qtf)[0]
     w = np.asarray(DEFAULT_OMEGA if omega is None else omega, float)
     force = IrregularWaveDriftForce(
         qtf=q,
         spectrum=Jonswap(hs=hs, tp=tp),
         omega=w,
-        scales=presets.barge2_scales(u_tug),
+        scales=presets.barge2_scales(u_tug, draft),
         form=form,
     )
-    return _barge2_tow(version, l0, xp, u_tug, force)
+    return _barge2_tow(version, l0, xp, u_tug, force, draft)
 
 
 def nearest_straight(arrays: dict, field: str = "max_real"):

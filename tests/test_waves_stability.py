@@ -1,6 +1,5 @@
 """Towing stability in waves and wind: force hooks, parameter paths, the report."""
 
-import json
 import math
 
 import numpy as np
@@ -84,41 +83,3 @@ def test_nearest_straight_reduction():
     )
     out = nearest_straight(arrays)
     assert out[0] == -2.0 and np.isnan(out[1])
-
-
-@pytest.mark.slow
-def test_report_waves_writes_claims(tmp_path, capsys):
-    from jaxtow.cli import main
-
-    main(
-        [
-            "report",
-            "waves",
-            "--out",
-            str(tmp_path),
-            "--n",
-            "6",
-            "--n-grid",
-            "201",
-            "--t1",
-            "80",
-            "--quiet",
-        ]
-    )
-    claims = json.loads((tmp_path / "claims.json").read_text())
-    assert len(claims) == 9
-    assert [c for c in claims if c["claim"].startswith("Time-domain")][0]["reproduced"]
-    for c in claims:
-        assert set(c) >= {"claim", "measured", "reproduced"} and isinstance(c["reproduced"], bool)
-    assert (tmp_path / "barge_2a_map_l0_omega.png").is_file()
-    ds = jt.io.load_dataset(tmp_path / "barge_2a_map_l0_omega.nc")
-    assert "APPROXIMATE" in ds.attrs["drift_source"]
-    assert ds.attrs["sailing_form"] == "aranha"
-    assert "validity_no_separation" in ds and "physics_valid" in ds
-    for v in ("2a", "2b"):
-        assert (tmp_path / f"barge_{v}_map_utug_omega.png").is_file()
-        assert (tmp_path / f"barge_{v}_heading_utug_omega.png").is_file()
-    tug = jt.io.load_dataset(tmp_path / "barge_2a_map_utug_omega.nc")
-    assert tug["u_tug"].values.min() == 1.0 and tug["u_tug"].values.max() == 3.0
-    summary = json.loads((tmp_path / "summary.json").read_text())
-    assert 0.0 <= summary["validity_share"]["barge_2a_map_l0_omega"]["physics_valid"] <= 1.0

@@ -35,6 +35,7 @@ from .solve import (
     RigidBody as RigidBody,
     bem_drift as bem_drift,
     box_barge_drift as box_barge_drift,
+    far_field_drift as far_field_drift,
     mesh_convergence as mesh_convergence,
     qtf_attrs as qtf_attrs,
     qtf_from_bem as qtf_from_bem,
@@ -43,6 +44,7 @@ from .solve import (
     require_capytaine as require_capytaine,
     rigid_body as rigid_body,
     solve_frequency as solve_frequency,
+    symmetric_capytaine_mesh as symmetric_capytaine_mesh,
 )
 
 
@@ -74,4 +76,6 @@ __all__ = [
     "require_capytaine",
     "rigid_body",
     "solve_frequency",
+    "symmetric_capytaine_mesh",
+    "far_field_drift",
 ]

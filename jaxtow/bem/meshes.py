@@ -17,7 +17,8 @@ axes of jaxtow. Builders:
 * `jaxtow.bem.read_mesh` (needs Capytaine) reads user hulls in the formats Capytaine reads.
 
 Panel size control: every patch is cut into ceil(extent / panel_size) panels along each of
-its two directions, so patches share their edge vertices (a conforming mesh).
+its two directions (rounded up to an even number along the length and the breadth, so that
+no panel straddles a symmetry plane), so patches share their edge vertices (a conforming mesh).
 """
 
 from __future__ import annotations
@@ -184,6 +185,13 @@ def _n(extent, panel_size):
     return max(1, int(math.ceil(extent / panel_size - 1e-9)))
 
 
+def _n_even(extent, panel_size):
+    """An even panel count across a symmetry plane, so that no panel straddles it and the
+    panel solver can use the hull's reflection symmetry."""
+    n = _n(extent, panel_size)
+    return n + (n % 2)
+
+
 def _check(**kw):
     for name, v in kw.items():
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
@@ -194,7 +202,9 @@ def _lid(xmin, xmax, ymin, ymax, panel_size):
     def corner(S, T):
         return np.stack([xmin + (xmax - xmin) * S, ymin + (ymax - ymin) * T, np.zeros_like(S)], -1)
 
-    return _patch(corner, _n(xmax - xmin, panel_size), _n(ymax - ymin, panel_size), (0, 0, -1))
+    return _patch(
+        corner, _n_even(xmax - xmin, panel_size), _n_even(ymax - ymin, panel_size), (0, 0, -1)
+    )
 
 
 def raked_barge_mesh(
@@ -218,7 +228,7 @@ def raked_barge_mesh(
     if not (math.isfinite(rake) and 0.0 <= rake < 0.5 * length):
         raise ValueError(f"parameter 'rake' must lie in [0, length/2), got {rake!r}")
     L2, B2, T, a = 0.5 * length, 0.5 * breadth, float(draft), float(rake)
-    nx, ny = _n(length, panel_size), _n(breadth, panel_size)
+    nx, ny = _n_even(length, panel_size), _n_even(breadth, panel_size)
     nz = _n(math.hypot(a, T), panel_size)
 
     def side(sign):

@@ -80,8 +80,8 @@ def build(cfg: dict, panel_size: float | None = None):
             return bem.read_mesh(h["path"], panel_size=p)
     else:
         raise ValueError(f"config [hull] kind: 'box', 'barge2' or 'file', got {kind!r}")
-    omega = _grid(w.get("omega", [0.05, 2.1, 42]), "omega")
-    beta = np.radians(_grid(w.get("beta_deg", [0, 90, 7]), "beta_deg"))
+    omega = _grid(w.get("omega", [0.05, 2.5, 61]), "omega")
+    beta = np.radians(_grid(w.get("beta_deg", [0, 180, 25]), "beta_deg"))
     depth = w.get("water_depth", "inf")
     depth = math.inf if str(depth).lower() in ("inf", "infinity") else float(depth)
     kw = dict(

@@ -1,11 +1,14 @@
-"""``jaxtow report waves --out DIR``: towing stability in waves (thesis chapters 6.2-6.3, 7.2.2):
-stability and equilibrium maps, time-domain runs and ``claims.json`` checking the thesis's
-claims, each with its numbers and reproduced yes/no."""
+"""``jaxtow report waves --out DIR``: towing stability in waves and tow resistance (thesis
+chapters 6.2-6.3 and 7): stability and equilibrium maps, time-domain runs (with the slowly
+varying drift), ``claims.json`` / ``claims.md`` checking every thesis claim under each drift
+source (the shipped panel near field, its far field, the stand-in) and each sailing-drift
+form, and the attribution of every claim of the primary source and form that does not
+reproduce (`jaxtow.reports.WaveStudy`, `jaxtow.reports.attribute`)."""
 
 from __future__ import annotations
 
 import json
-import math
+import time
 from pathlib import Path
 
 import numpy as np
@@ -13,24 +16,8 @@ import numpy as np
 from .. import reports as W
 
 
-def _map(model, grid, progress, n_grid):
-    from .._sweep import sweep
-
-    return sweep(
-        model,
-        grid,
-        n_grid=n_grid,
-        max_roots=4,
-        routh_hurwitz=False,
-        progress=progress,
-        specialise=True,
-    )
-
-
 def _straight(ds, field="max_real"):
-    from ..study import nearest_straight
-
-    return nearest_straight({k: ds[k].values for k in ("valid", "psi", field)}, field)
+    return W.straight(ds, field)
 
 
 def _invalid(ds):
@@ -49,11 +36,17 @@ def _validity_share(ds) -> dict:
     return out
 
 
-def cmd_report(args):
+#: The drift sources of the claims table, and their short names.
+SOURCES = ("near_field", "far_field", "standin")
+SOURCE_NAMES = {
+    "near_field": "panel near field",
+    "far_field": "panel far field",
+    "standin": "stand-in",
+}
 
-    from .. import presets
-    from .._metrics import fishtail_metrics
-    from .._simulate import initial_state, simulate
+
+def _figures(study, out: Path, summary: dict, progress: bool) -> None:
+    """Figures and NetCDF datasets of the primary study (drift source and form)."""
     from ..io import save_dataset
     from ..plotting.calm import save
     from ..plotting.waves_report import (
@@ -63,121 +56,56 @@ def cmd_report(args):
         plot_runs,
         plot_with_without,
     )
-    from ..study import (
-        APPROXIMATE_QTF,
-        approximate_qtf,
-        barge2_irregular_model,
-        barge2_wave_model,
-        valid_count,
-    )
-    from ..waves import physical_tp_range
+    from ..study import valid_count
 
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    progress = not args.quiet
-    if args.qtf:
-        from .resistance import _qtf
-
-        qtf, source = _qtf(args.qtf), f"QTF file {args.qtf}"
-    else:
-        qtf, source = approximate_qtf(), APPROXIMATE_QTF
-
-    za, n, form = args.zeta_a, args.n, args.form
-    l0 = np.linspace(0.3, 3.0, n)
-    omega = np.linspace(0.3, 2.0, n)
-    claims: list = []
-    summary: dict = dict(
-        drift_source=source,
-        zeta_a=za,
-        u_tug=presets.U_TUG_DEFAULT,
-        xp=0.5,
-        sailing_form=form,
-        assumptions={k: v["note"] for k, v in presets.ASSUMPTIONS.items()},
-    )
-    attrs = dict(drift_source=source, sailing_form=form)
+    src, za, ax = study.source, study.zeta_a, study.axes
+    l0, omega, tps = ax["l0"], ax["omega"], ax["tp"]
     validity = summary.setdefault("validity_share", {})
-
-    # --- (l0', omega) stability maps, with the calm reference (figs 6.17-6.19) -------------
-    maps, calm = {}, {}
     for v in ("2a", "2b"):
-        m = barge2_wave_model(v, omega=1.0, zeta_a=za, qtf=qtf, form=form)
-        ds = _map(m, {"l0": l0, "external.omega": omega}, progress, args.n_grid).assign_attrs(attrs)
+        ds = study.maps_l0_omega[v]
         save_dataset(ds, out / f"barge_{v}_map_l0_omega.nc")
-        maps[v] = _straight(ds)
         validity[f"barge_{v}_map_l0_omega"] = _validity_share(ds)
-        cds = _map(m.__class__(vessel=m.vessel, towline=m.towline), {"l0": l0}, False, args.n_grid)
-        calm[v] = _straight(cds)
         save(
             plot_max_real_map(
                 l0,
                 omega,
-                maps[v],
-                title=f"Barge {v}: max Re lambda, straight behind, "
-                f"zeta_a = {za} m (figs 6.17-6.19)",
-                note=source,
+                _straight(ds),
+                title=f"Barge {v}: max Re lambda, straight behind, zeta_a = {za} m (figs 6.17-6.19)",
+                note=src,
                 invalid=_invalid(ds),
             ),
             out / f"barge_{v}_map_l0_omega.png",
         )
-    for v in ("2a", "2b"):
+        mp = _straight(ds)
         picks = {
-            f"omega = {omega[k]:.2f} rad/s": maps[v][:, k]
+            f"omega = {omega[k]:.2f} rad/s": mp[:, k]
             for k in sorted({int(np.argmin(np.abs(omega - w))) for w in (0.5, 0.8, 1.0, 1.5)})
         }
         save(
             plot_with_without(
                 l0,
-                calm[v],
+                study.calm[v],
                 picks,
                 title=f"Barge {v}: with and without waves, zeta_a = {za} m (figs 6.27-6.28)",
-                note=source,
+                note=src,
             ),
             out / f"barge_{v}_with_without_waves.png",
         )
-    claims.append(
-        W.low_frequency_waves_keep_calm_verdict(maps["2a"], calm["2a"], omega, source=source)
-    )
-    claims.append(W.moderate_waves_stabilise_2a(maps["2a"], omega, source=source))
-    claims.append(W.barge_2b_stays_stable(maps["2b"], calm["2b"], source=source))
-
-    # --- equilibria over (zeta_a, omega) (figs 6.13-6.16, position count) ---------------------
-    zs = np.linspace(0.05, 2.5, max(n // 2, 6))
-    extra = {}
-    for v in ("2a", "2b"):
-        m = barge2_wave_model(v, omega=1.0, zeta_a=za, qtf=qtf, form=form)
-        ds = _map(
-            m, {"external.zeta_a": zs, "external.omega": omega}, progress, args.n_grid
-        ).assign_attrs(attrs)
+        ds = study.equilibria_zeta_omega[v]
         save_dataset(ds, out / f"barge_{v}_equilibria_zeta_omega.nc")
-        cnt = valid_count({k: ds[k].values for k in ("valid",)})
-        c0 = int(
-            valid_count(
-                {
-                    "valid": _map(
-                        m.__class__(vessel=m.vessel, towline=m.towline),
-                        {"l0": [2.5]},
-                        False,
-                        args.n_grid,
-                    )["valid"].values
-                }
-            )[0]
-        )
-        extra[v] = dict(
-            calm_count=c0, max_count_below_0_8=int(cnt[zs < 0.8].max()), max_count=int(cnt.max())
-        )
         save(
             plot_count_map(
-                zs,
+                study.zeta_grid,
                 omega,
-                cnt,
-                title=f"Barge {v}: number of equilibria, l0' = 2.5 (calm: {c0})",
-                note=source,
+                valid_count({"valid": ds["valid"].values}),
+                title=f"Barge {v}: number of equilibria, l0' = 2.5 (calm: {study.calm_counts[v]})",
+                note=src,
             ),
             out / f"barge_{v}_equilibria_zeta_omega.png",
         )
         save(
             plot_heading_map(
-                zs,
+                study.zeta_grid,
                 omega,
                 _straight(ds, "psi"),
                 "zeta_a [m]",
@@ -186,14 +114,24 @@ def cmd_report(args):
             ),
             out / f"barge_{v}_heading_zeta_omega.png",
         )
-    claims.append(W.small_waves_add_no_equilibria(extra, source=source))
-
-    # --- tug speed: (U_tug, omega) maps of heading and max Re lambda at l0' = 2.5 -----------
-    speeds = np.linspace(1.0, 3.0, max(n // 2, 6))
-    for v in ("2a", "2b"):
-        m = barge2_wave_model(v, l0=2.5, omega=1.0, zeta_a=za, qtf=qtf, form=form)
-        ds = _map(m, {"u_tug": speeds, "external.omega": omega}, progress, args.n_grid)
-        ds = ds.assign_attrs(attrs)
+        ds = study.maps_l0_tp[v]
+        save_dataset(ds, out / f"barge_{v}_map_l0_tp.nc")
+        validity[f"barge_{v}_map_l0_tp"] = _validity_share(ds)
+        save(
+            plot_max_real_map(
+                l0,
+                tps,
+                _straight(ds),
+                ylabel="Tp [s]",
+                title=f"Barge {v}: max Re lambda, Hs = {study.hs} m (fig. 6.26)",
+                note=src,
+                invalid=_invalid(ds),
+            ),
+            out / f"barge_{v}_map_l0_tp.png",
+        )
+        # tug speed: (U_tug, omega) maps of max Re lambda and heading at l0' = 2.5
+        speeds = np.linspace(1.0, 3.0, max(study.n // 2, 6))
+        ds = study._map(study.wave_model(v, l0=2.5), {"u_tug": speeds, "external.omega": omega})
         save_dataset(ds, out / f"barge_{v}_map_utug_omega.nc")
         validity[f"barge_{v}_map_utug_omega"] = _validity_share(ds)
         save(
@@ -203,7 +141,7 @@ def cmd_report(args):
                 _straight(ds),
                 xlabel="U_tug [m/s]",
                 title=f"Barge {v}: max Re lambda over tug speed, l0' = 2.5, zeta_a = {za} m",
-                note=source,
+                note=src,
                 invalid=_invalid(ds),
             ),
             out / f"barge_{v}_map_utug_omega.png",
@@ -219,157 +157,184 @@ def cmd_report(args):
             ),
             out / f"barge_{v}_heading_utug_omega.png",
         )
-
-    # --- heading over (xp', omega) (fig. 6.13) ------------------------------------------------
-    xps = np.linspace(0.05, 1.0, n)
-    ds = _map(
-        barge2_wave_model("2a", omega=1.0, zeta_a=za, qtf=qtf, form=form),
-        {"xp": xps, "external.omega": omega},
-        progress,
-        args.n_grid,
-    ).assign_attrs(attrs)
-    save_dataset(ds, out / "barge_2a_equilibria_xp_omega.nc")
-    save(
-        plot_heading_map(
-            xps,
-            omega,
-            _straight(ds, "psi"),
-            "x_p' [-]",
-            title=f"Barge 2a: heading nearest straight behind, zeta_a = {za} m (fig. 6.13)",
+    # heading over (xp', omega) and (xp', Tp) (figs 6.13, 6.23)
+    xps = np.linspace(0.05, 1.0, study.n)
+    for tag, model, grid, ylab, fig in (
+        (
+            "omega",
+            study.wave_model("2a"),
+            {"xp": xps, "external.omega": omega},
+            "omega [rad/s]",
+            "6.13",
         ),
-        out / "barge_2a_heading_xp_omega.png",
-    )
-
-    # --- irregular seas: (l0', Tp) over the physical range (fig. 6.26) -----------------------
-    lo, hi = (float(t) for t in physical_tp_range(args.hs))
-    tps = np.linspace(lo, hi, max(n // 2, 6))
-    irr = {}
-    for v in ("2a", "2b"):
-        m = barge2_irregular_model(v, hs=args.hs, tp=0.5 * (lo + hi), qtf=qtf, form=form)
-        ds = _map(m, {"l0": l0, "external.spectrum.tp": tps}, progress, args.n_grid).assign_attrs(
-            attrs
-        )
-        save_dataset(ds, out / f"barge_{v}_map_l0_tp.nc")
-        irr[v] = _straight(ds)
-        validity[f"barge_{v}_map_l0_tp"] = _validity_share(ds)
+        (
+            "tp",
+            study.irregular_model("2a"),
+            {"xp": xps, "external.spectrum.tp": tps},
+            "Tp [s]",
+            "6.23",
+        ),
+    ):
+        ds = study._map(model, grid)
+        save_dataset(ds, out / f"barge_2a_equilibria_xp_{tag}.nc")
         save(
-            plot_max_real_map(
-                l0,
-                tps,
-                irr[v],
-                ylabel="Tp [s]",
-                title=f"Barge {v}: max Re lambda, Hs = {args.hs} m (fig. 6.26)",
-                note=source,
+            plot_heading_map(
+                xps,
+                grid[list(grid)[1]],
+                _straight(ds, "psi"),
+                "x_p' [-]",
+                ylabel=ylab,
+                title=f"Barge 2a: heading nearest straight behind (fig. {fig})",
                 invalid=_invalid(ds),
             ),
-            out / f"barge_{v}_map_l0_tp.png",
+            out / f"barge_2a_heading_xp_{tag}.png",
         )
-    ds = _map(
-        barge2_irregular_model("2a", hs=args.hs, tp=0.5 * (lo + hi), qtf=qtf, form=form),
-        {"xp": xps, "external.spectrum.tp": tps},
-        progress,
-        args.n_grid,
-    ).assign_attrs(attrs)
-    save_dataset(ds, out / "barge_2a_equilibria_xp_tp.nc")
-    save(
-        plot_heading_map(
-            xps,
-            tps,
-            _straight(ds, "psi"),
-            "x_p' [-]",
-            ylabel="Tp [s]",
-            title=f"Barge 2a: heading nearest straight behind, Hs = {args.hs} m (fig. 6.23)",
-        ),
-        out / "barge_2a_heading_xp_tp.png",
-    )
-    claims.append(W.irregular_sea_keeps_2a_stable(irr["2a"], args.hs, (lo, hi), source=source))
-
-    # --- time domain: path widths (figs 6.20-6.22, 7.5) and linear agreement ------------------
-    runs, widths = {}, {}
-    for tag, w in (("calm", None), ("omega_1.0", 1.0), ("omega_1.5", 1.5)):
-        m = barge2_wave_model(
-            "2a", l0=2.5, omega=w or 1.0, zeta_a=za if w else 0.0, qtf=qtf, form=form
-        )
-        sim = simulate(m, initial_state(m, psi0=0.2, y0=0.1), t1=args.t1, n_save=2001)
-        met = fishtail_metrics(m, sim)
-        runs[tag], widths[tag] = (m, sim), float(met["path_width"])
-    from ..forces._wind import WindForce
-    from ..presets import barge2_resistance
-
-    extra_runs = {
-        f"irregular Hs = {args.hs} m, Tp = 7 s": barge2_irregular_model(
-            "2a", l0=2.5, hs=args.hs, tp=7.0, qtf=qtf, form=form
-        ),
-        f"wind {args.wind:g} m/s (ILLUSTRATIVE table)": barge2_wave_model(
-            "2a",
-            l0=2.5,
-            zeta_a=0.0,
-            qtf=qtf,
-            wind=WindForce(
-                load=barge2_resistance().wind, speed=args.wind, scales=presets.barge2_scales()
-            ),
-        ),
-    }
-    for tag, m in extra_runs.items():
-        sim = simulate(m, initial_state(m, psi0=0.2, y0=0.1), t1=args.t1, n_save=2001)
-        runs[tag], widths[tag] = (m, sim), float(fishtail_metrics(m, sim)["path_width"])
+    runs = {k: (m, sim) for k, (m, sim, _) in study.runs.items()}
     save(
         plot_runs(runs, title=f"Barge 2a, l0' = 2.5, zeta_a = {za} m (figs 6.20-6.22, 7.5)"),
         out / "barge_2a_time_domain.png",
     )
-    wind_tag = f"wind {args.wind:g} m/s (ILLUSTRATIVE table)"
-    claims.append(W.waves_reduce_path_width(widths, source=source))
-    claims.append(W.path_widths_match_thesis(widths, source=source))
-    claims.append(W.head_wind_reduces_path_width(widths, wind_tag, args.wind, source=source))
-    agree = _linear_agreement(maps, l0, omega, za, qtf, args)
-    claims.append(W.time_domain_agrees_with_linear(agree, source=source))
 
+
+def _panel_variants(folder):
+    """{(estimate, end): QTF, ("base",): QTF} from a folder of ``jaxtow bem`` runs named
+    base, cogz_lo, cogz_hi, radii_lo, radii_hi, zeta_lo, zeta_hi (near field)."""
+    from ..io import load_qtf
+
+    names = {
+        "base": ("base",),
+        "cogz_lo": ("cog_z", "low"),
+        "cogz_hi": ("cog_z", "high"),
+        "radii_lo": ("radii_of_gyration", "low"),
+        "radii_hi": ("radii_of_gyration", "high"),
+        "zeta_lo": ("roll_damping", "low"),
+        "zeta_hi": ("roll_damping", "high"),
+    }
+    out = {}
+    for d, key in names.items():
+        f = Path(folder) / d / "qtf_near_field.nc"
+        if f.exists():
+            out[key] = load_qtf(f)
+    return out if ("base",) in out else None
+
+
+def claims_table(claims: list) -> str:
+    """The readable claims table: one row per claim, one column per (source, form)."""
+    cols = sorted(
+        {(c["source_key"], c["sailing_form"]) for c in claims},
+        key=lambda k: (SOURCES.index(k[0]) if k[0] in SOURCES else 9, k[1]),
+    )
+    ids = list(dict.fromkeys(c["id"] for c in claims))
+    by = {(c["id"], c["source_key"], c["sailing_form"]): c for c in claims}
+    text = {c["id"]: c["claim"] for c in claims}
+    head = "| claim | " + " | ".join(f"{SOURCE_NAMES.get(s, s)}, {f}" for s, f in cols) + " |"
+    lines = [head, "|---" * (len(cols) + 1) + "|"]
+    for i in ids:
+        cells = []
+        for s, f in cols:
+            c = by.get((i, s, f))
+            cells.append("-" if c is None else ("yes" if c["reproduced"] else "NO"))
+        lines.append(f"| {text[i]} | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def plan(args):
+    """(primary source, sources, forms) of a report: the primary source and form first, then
+    the others of ``--sources`` / ``--forms`` (default: all of `SOURCES`, aranha and thesis)."""
+    primary = args.qtf or "near_field"
+    srcs = args.sources.split(",") if args.sources else SOURCES
+    fms = args.forms.split(",") if args.forms else ("aranha", "thesis")
+    sources = [primary] + [s for s in srcs if s and s != primary]
+    forms = [args.form] + [f for f in fms if f and f != args.form]
+    return primary, sources, forms
+
+
+def cmd_report(args):
+    from .. import presets
+    from ..drift._database import drift_source
+
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    progress = not args.quiet
+    primary, sources, forms = plan(args)
+    common = dict(
+        zeta_a=args.zeta_a, hs=args.hs, n=args.n, n_grid=args.n_grid, t1=args.t1, wind=args.wind
+    )
+    base = W.WaveStudy(qtf=primary, form=args.form, progress=progress, **common)
+    summary: dict = dict(
+        drift_source=base.source,
+        zeta_a=args.zeta_a,
+        u_tug=presets.U_TUG_DEFAULT,
+        xp=0.5,
+        sailing_form=args.form,
+        sources={s: drift_source(s)[1] for s in sources},
+        forms=forms,
+        assumptions={k: v["note"] for k, v in presets.ASSUMPTIONS.items()},
+        plausible_ranges={k: v["note"] for k, v in presets.PLAUSIBLE_RANGES.items()},
+    )
+    claims: list = []
+    t0 = time.perf_counter()
+    for s in sources:
+        for f in forms:
+            st = (
+                base
+                if (s, f) == (primary, args.form)
+                else base.variant(qtf=s, form=f, progress=False)
+            )
+            for c in st.claims():
+                c["source_key"] = s
+                claims.append(c)
+            if (s, f) == (primary, args.form):
+                _figures(st, out, summary, progress)
+            print(
+                f"claims computed: {SOURCE_NAMES.get(s, s)}, {f} ({time.perf_counter() - t0:.0f} s)",
+                flush=True,
+            )
+    # attribution of every claim of the primary study that does not reproduce
+    variants = _panel_variants(args.panel_variants) if args.panel_variants else None
+    attributions = {}
+    if args.attribution:
+        for c in claims:
+            if (c["source_key"], c["sailing_form"]) == (primary, args.form) and not c["reproduced"]:
+                a = W.attribute(base, c["id"], n=args.attribution_n, panel_variants=variants)
+                c["attribution"] = a
+                attributions[c["id"]] = a
+                print(
+                    f"attributed: {c['id']}: flipped by {a['flipped_by'] or 'none of the estimates'}"
+                )
+    # slowly varying drift in the time domain
+    if args.slow_drift_hours > 0:
+        from ..plotting.calm import save
+        from ..plotting.waves_report import plot_runs
+
+        sd = W.slow_drift_runs(base, hours=args.slow_drift_hours)
+        summary["slow_drift"] = {k: v[3] for k, v in sd.items()}
+        save(
+            plot_runs(
+                {k: (v[0], v[1]) for k, v in sd.items()},
+                title=f"Barge 2a, l0' = 2.5, Hs = {args.hs} m, Tp = 7 s: mean vs slowly varying drift",
+            ),
+            out / "barge_2a_slow_drift.png",
+        )
     summary["claims"] = claims
     (out / "claims.json").write_text(json.dumps(claims, indent=2, default=float))
     (out / "summary.json").write_text(json.dumps(summary, indent=2, default=float))
-    for c in claims:
-        print(f"[{'yes' if c['reproduced'] else 'NO '}] {c['claim']}")
-    print(f"drift forces: {source}")
-    print(f"wrote figures, NetCDF datasets, claims.json and summary.json to {out}")
-
-
-def _linear_agreement(maps, l0, omega, za, qtf, args, margin: float = 0.02, per_side: int = 4):
-    """Simulate map points with |max Re λ| > margin (both signs) from a small disturbance of
-    the straight-behind equilibrium; stable ⇔ the run converges."""
-
-    from .._equilibrium import equilibria
-    from .._metrics import fishtail_metrics
-    from .._parameters import with_parameters
-    from .._simulate import simulate
-    from ..study import barge2_wave_model
-
-    rng = np.random.default_rng(1)
-    picks = []
-    for sign in (-1, 1):
-        ii, jj = np.nonzero(sign * maps["2a"] > margin)
-        if ii.size:
-            k = rng.choice(ii.size, size=min(per_side, ii.size), replace=False)
-            picks += [(int(ii[q]), int(jj[q]), sign) for q in k]
-    base = barge2_wave_model("2a", omega=1.0, zeta_a=za, qtf=qtf, form=args.form)
-    rows, ok = [], 0
-    for i, j, sign in picks:
-        m = with_parameters(base, l0=float(l0[i]), **{"external.omega": float(omega[j])})
-        e = equilibria(m)
-        y = e.state[int(np.argmin(np.abs(np.asarray(e.psi))))]
-        sim = simulate(m, y.at[5].add(math.radians(2.0)), t1=args.t1, n_save=1001)
-        out = fishtail_metrics(m, sim)["outcome"]
-        agrees = (out == "converged") == (sign < 0)
-        ok += agrees
-        rows.append(
-            dict(
-                l0=float(l0[i]),
-                omega=float(omega[j]),
-                max_real=float(maps["2a"][i, j]),
-                outcome=out,
-                agrees=bool(agrees),
-            )
+    table = claims_table(claims)
+    (out / "claims.md").write_text(
+        "# Thesis claims by drift source and sailing-drift form\n\n"
+        + table
+        + "\nDrift sources:\n\n"
+        + "".join(f"* {SOURCE_NAMES.get(k, k)}: {v}\n" for k, v in summary["sources"].items())
+        + (
+            "\nAttribution of the claims that do not reproduce (primary source and form): "
+            "claims.json, key 'attribution'.\n"
+            if attributions
+            else ""
         )
-    return dict(runs=len(rows), agree=ok, margin=margin, points=rows)
+    )
+    print(table)
+    print(f"primary drift forces: {base.source} ({args.form})")
+    print(f"wrote figures, NetCDF datasets, claims.json, claims.md and summary.json to {out}")
 
 
 def add_parser(sub):
@@ -385,8 +350,43 @@ def add_parser(sub):
     r.add_argument(
         "--qtf",
         default=None,
-        help="panel-method QTF file (.nc/.csv jaxtow, .8/.9 WAMIT); default: the "
-        "documented Kashiwagi-waterline stand-in",
+        help="primary drift source: near_field (default: the shipped Barge 2 panel database), "
+        "far_field, standin (the Kashiwagi-waterline stand-in) or a QTF file (.nc/.csv jaxtow, "
+        ".8/.9 WAMIT)",
+    )
+    r.add_argument(
+        "--sources",
+        default=None,
+        help="comma-separated drift sources of the claims table (default near_field,far_field,standin)",
+    )
+    r.add_argument(
+        "--forms",
+        default=None,
+        help="comma-separated sailing-drift forms of the claims table (default aranha,thesis)",
+    )
+    r.add_argument(
+        "--no-attribution",
+        dest="attribution",
+        action="store_false",
+        help="skip the attribution of the claims that do not reproduce",
+    )
+    r.add_argument(
+        "--attribution-n",
+        type=int,
+        default=None,
+        help="map points per axis of the attribution re-runs (default n // 2, at least 9)",
+    )
+    r.add_argument(
+        "--panel-variants",
+        default=None,
+        help="folder of jaxtow bem runs of the panel-only estimates (base, cogz_lo, cogz_hi, "
+        "radii_lo, radii_hi, zeta_lo, zeta_hi) for the attribution",
+    )
+    r.add_argument(
+        "--slow-drift-hours",
+        type=float,
+        default=3.0,
+        help="record length of the slowly varying drift runs [h] (0: skip)",
     )
     r.add_argument(
         "--zeta-a", type=float, default=1.25, help="regular-wave amplitude [m] (thesis: 1.25)"
@@ -395,7 +395,11 @@ def add_parser(sub):
         "--hs", type=float, default=2.4, help="Hs of the irregular sea [m] (thesis: 2.4)"
     )
     r.add_argument(
-        "--n", type=int, default=41, help="points per map axis (41: a few minutes on 2 cores)"
+        "--n",
+        type=int,
+        default=41,
+        help="points per map axis (41: the six source/form studies take about an hour on 2 cores, "
+        "most of it compiling; --sources/--forms to run fewer)",
     )
     r.add_argument(
         "--n-grid",

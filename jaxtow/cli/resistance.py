@@ -60,13 +60,6 @@ def _wind_table(path):
     )
 
 
-def _qtf(path):
-    from ..io import load_qtf, read_wamit_drift
-
-    p = Path(path)
-    return load_qtf(p) if p.suffix in (".nc", ".csv") else read_wamit_drift(p)
-
-
 def build(cfg: dict):
     """(tow, tug, sea states, heading [rad], route length [m] or None) from a parsed config."""
     from .. import presets, resistance as R
@@ -87,12 +80,14 @@ def build(cfg: dict):
         raise ValueError(
             f"config [tow] vessel: built-in vessels are 'barge_2a' and 'barge_2b', got {vessel!r}"
         )
-    drift = tow_c.get("wave_drift", "kashiwagi")
+    drift = tow_c.get("wave_drift", "near_field")
     kw = dict(wind_height=tow_c.get("wind_height"))
     if drift in METHODS:
         kw["method"] = drift
     else:
-        kw["qtf"] = _qtf(drift)
+        from ..drift._database import drift_source
+
+        kw["qtf"], kw["drift_source"] = drift_source(drift)
         kw["form"] = tow_c.get("sailing_form", "aranha")
     if "wind_table" in tow_c:
         kw["wind_table"] = _wind_table(tow_c["wind_table"])

@@ -1,4 +1,4 @@
-"""Wave drift: QTF databases, wave-drift damping, sailing drift, and the short-wave / empirical
+"""Wave drift: QTF databases (the shipped panel-method ones: `database`), wave-drift damping, sailing drift, and the short-wave / empirical
 methods from the waterline. The tow-model wave forces built on them are in `jaxtow.forces`."""
 
 from ._compare import (
@@ -15,6 +15,17 @@ from ._damping import (
     sailing_validity as sailing_validity,
     wave_drift_damping as wave_drift_damping,
     yaw_rate_damping as yaw_rate_damping,
+)
+from ._database import (
+    DATABASE_METHODS as DATABASE_METHODS,
+    DATABASES as DATABASES,
+    DEFAULT_METHOD as DEFAULT_METHOD,
+    STANDIN as STANDIN,
+    database as database,
+    database_attrs as database_attrs,
+    database_file as database_file,
+    describe_database as describe_database,
+    drift_source as drift_source,
 )
 from ._methods import (
     FROUDE_MAX as FROUDE_MAX,
@@ -55,6 +66,15 @@ __all__ = [
     "qtf_from_method",
     "relative_mse",
     "relative_mse_by_zone",
+    "DATABASE_METHODS",
+    "DATABASES",
+    "DEFAULT_METHOD",
+    "STANDIN",
+    "database",
+    "database_attrs",
+    "database_file",
+    "describe_database",
+    "drift_source",
     "TAU_MAX",
     "aranha",
     "sailing_validity",

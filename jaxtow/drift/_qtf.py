@@ -137,6 +137,43 @@ class QTF(eqx.Module):
             sec = complete(*(np.asarray(v, float) for v in sectional))
         return cls(omega=np.asarray(omega, float), beta=bb, fx=fxx, fy=fyy, nz=nzz, sectional=sec)
 
+    def smoothed(self, harmonics: int = 8) -> QTF:
+        """The table smoothed in heading: at every frequency each component (and sectional
+        moment) is replaced by its least-squares Fourier series in β truncated at
+        ``harmonics`` (a C^∞ periodic fit), evaluated at the same nodes; the interpolant is
+        then built from it as usual. For a panel table whose heading slopes are noisy
+        (docs/bem.md, "Shipped databases"). Needs a full-circle table with more than
+        2·harmonics + 1 distinct headings."""
+        if not isinstance(harmonics, int) or harmonics < 1:
+            raise ValueError(f"parameter 'harmonics' must be an integer >= 1, got {harmonics!r}")
+        if not self.periodic:
+            raise ValueError("QTF.smoothed needs a full-circle table (beta from -pi to pi)")
+        b = np.asarray(self.beta)[:-1]  # distinct headings (the last repeats the first)
+        if b.size <= 2 * harmonics + 1:
+            raise ValueError(
+                f"parameter 'harmonics': {harmonics} harmonics need more than {2 * harmonics + 1} "
+                f"distinct headings, the table has {b.size}"
+            )
+        k = np.arange(1, harmonics + 1)
+        basis = np.concatenate(
+            [np.ones((b.size, 1)), np.cos(np.outer(b, k)), np.sin(np.outer(b, k))], axis=1
+        )
+        full = np.asarray(self.beta)
+        at = np.concatenate(
+            [np.ones((full.size, 1)), np.cos(np.outer(full, k)), np.sin(np.outer(full, k))], axis=1
+        )
+
+        def fit(v):  # (3, nω, nβ)
+            v = np.asarray(v)[..., :-1]
+            coef, *_ = np.linalg.lstsq(basis, v.reshape(-1, b.size).T, rcond=None)
+            out = (at @ coef).T.reshape(v.shape[:-1] + (full.size,))
+            out[..., -1] = out[..., 0]  # beta = +pi is beta = -pi
+            return out
+
+        fx, fy, nz = fit(self.values)
+        sec = None if self.sectional is None else list(fit(self.sectional))
+        return QTF(omega=self.omega, beta=self.beta, fx=fx, fy=fy, nz=nz, sectional=sec)
+
     def in_table(self, beta):
         """True where β lies inside the table's heading range (always for a full circle)."""
         beta = jnp.asarray(beta)

@@ -17,6 +17,7 @@ from ._base import (
 )
 from ._waves import (
     IrregularWaveDriftForce as IrregularWaveDriftForce,
+    SlowDriftForce as SlowDriftForce,
     WaveDriftForce as WaveDriftForce,
 )
 from ._wind import WindForce as WindForce
@@ -27,6 +28,7 @@ __all__ = [
     "ConstantBodyForce",
     "NoExternalForce",
     "IrregularWaveDriftForce",
+    "SlowDriftForce",
     "WaveDriftForce",
     "WindForce",
 ]

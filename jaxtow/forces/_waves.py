@@ -130,3 +130,111 @@ class IrregularWaveDriftForce(AbstractExternalForce):
             yaw_rate_damping=jnp.asarray(self.qtf.has_sectional and self.yaw_rate),
         )
         return out
+
+
+class SlowDriftForce(AbstractExternalForce):
+    """Mean plus slowly varying drift in an irregular head sea, Newman's approximation, for
+    time-domain runs (thesis 6.3 uses the mean only).
+
+    The sea is the sum of ``n`` seeded components ζ_i = a_i cos(ω_e,i t + ε_i), a_i =
+    √(2 S(ω_i) Δω_i), with one random frequency in each of ``n`` equal bins (so the record
+    does not repeat) and ω_e,i = ω_i + ω_i² U_tug/g the encounter frequency on the tug's
+    track. With T_i the sailing mean drift per ζa² at ω_i (`jaxtow.drift.sailing_drift` at
+    the vessel's state and heading, ``form``/``yaw_rate`` as in `IrregularWaveDriftForce`),
+    the force is the difference-frequency double sum with Newman's off-diagonal
+    T_ij = (T_i + T_j)/2:
+
+        F(t) = Σ_i Σ_j a_i a_j T_ij cos((ω_e,i − ω_e,j) t + ε_i − ε_j) = Re[A(t) Z(t)*],
+        A = Σ_i a_i T_i e^{iφ_i},  Z = Σ_i a_i e^{iφ_i},
+
+    evaluated in O(n). Its time average is Σ a_i² T_i = 2 ∫ S T dω, the mean drift. Newman's
+    approximation needs T to vary slowly with ω over the difference frequencies that matter
+    (the tow's slow yaw and sway periods); the full difference-frequency QTF is not used.
+    Build with `seeded`; ``validity`` is that of the mean force."""
+
+    qtf: QTF
+    spectrum: AbstractSpectrum
+    omega: jnp.ndarray = V.rule_field(rule=V.POSITIVE)
+    domega: jnp.ndarray = V.rule_field(rule=V.POSITIVE)
+    phase: jnp.ndarray
+    scales: Scales
+    form: str = eqx.field(static=True, default="aranha")
+    yaw_rate: bool = eqx.field(static=True, default=True)
+
+    def __check_init__(self):
+        check_form(self.form)
+
+    @classmethod
+    def seeded(
+        cls,
+        qtf: QTF,
+        spectrum: AbstractSpectrum,
+        scales: Scales,
+        *,
+        seed: int = 0,
+        n: int = 256,
+        omega_range=(0.1, 4.0),
+        form: str = "aranha",
+        yaw_rate: bool = True,
+    ) -> SlowDriftForce:
+        """Components from ``seed``: ``n`` bins over ``omega_range`` [rad/s]."""
+        import numpy as np
+
+        if not (isinstance(n, int) and n >= 2):
+            raise ValueError(f"parameter 'n' must be an integer >= 2, got {n!r}")
+        lo, hi = (float(w) for w in omega_range)
+        if not (0 < lo < hi):
+            raise ValueError(
+                f"parameter 'omega_range' must be (low, high) with 0 < low < high, got {omega_range!r}"
+            )
+        rng = np.random.default_rng(seed)
+        edges = np.linspace(lo, hi, n + 1)
+        w = edges[:-1] + rng.uniform(size=n) * np.diff(edges)
+        return cls(
+            qtf=qtf,
+            spectrum=spectrum,
+            omega=jnp.asarray(w),
+            domega=jnp.asarray(np.diff(edges)),
+            phase=jnp.asarray(rng.uniform(0.0, 2 * np.pi, n)),
+            scales=scales,
+            form=form,
+            yaw_rate=yaw_rate,
+        )
+
+    def amplitudes(self):
+        """a_i = √(2 S(ω_i) Δω_i) [m]."""
+        return jnp.sqrt(2.0 * self.spectrum(self.omega) * self.domega)
+
+    def dimensional(self, t, y):
+        """(Fx [N], Fy [N], Nz [N·m]) at non-dimensional time t and state y."""
+        import jax
+
+        U, L = self.scales.u_tug, self.scales.length
+        u, v, r, psi = y[0] * U, y[1] * U, y[2] * U / L, y[5]
+        T = jax.vmap(
+            lambda w: sailing_drift(
+                self.qtf, w, -psi, u, v, r, form=self.form, yaw_rate=self.yaw_rate
+            )
+        )(self.omega)  # (n, 3)
+        we = self.omega + self.omega**2 * U / G
+        z = self.amplitudes() * jnp.exp(1j * (we * t * L / U + self.phase))
+        A = jnp.sum(z[:, None] * T, axis=0)
+        return jnp.real(A * jnp.conj(jnp.sum(z)))
+
+    def __call__(self, t, y: Float[Array, "6"], model) -> Float[Array, "3"]:
+        return self.scales.nondimensional(self.dimensional(t, y))
+
+    def mean_force(self) -> IrregularWaveDriftForce:
+        """The mean drift of the same sea on the component grid."""
+        return IrregularWaveDriftForce(
+            qtf=self.qtf,
+            spectrum=self.spectrum,
+            omega=self.omega,
+            scales=self.scales,
+            form=self.form,
+            yaw_rate=self.yaw_rate,
+        )
+
+    def validity(self, y: Float[Array, "6"]) -> dict:
+        """That of the mean force (`IrregularWaveDriftForce.validity`)."""
+        return self.mean_force().validity(y)

@@ -2,6 +2,26 @@
 ``claims.json`` record (see ``jaxtow report waves``)."""
 
 from ._forms import forms_table as forms_table, sailing_forms as sailing_forms
+from ._maps import (
+    MAP_NAMES as MAP_NAMES,
+    map_axes as map_axes,
+    run_map as run_map,
+    straight as straight,
+    verdict_change as verdict_change,
+    verdict_maps as verdict_maps,
+)
+from ._study import (
+    CLAIM_IDS as CLAIM_IDS,
+    MODEL_ESTIMATES as MODEL_ESTIMATES,
+    PANEL_ESTIMATES as PANEL_ESTIMATES,
+    RESISTANCE_CLAIM_IDS as RESISTANCE_CLAIM_IDS,
+    SHARE_TOLERANCE as SHARE_TOLERANCE,
+    THESIS_SAILING_SHARES as THESIS_SAILING_SHARES,
+    THESIS_STATIONARY_WAVE_SHARE as THESIS_STATIONARY_WAVE_SHARE,
+    WaveStudy as WaveStudy,
+    attribute as attribute,
+    slow_drift_runs as slow_drift_runs,
+)
 from ._waves import (
     BAND_OMEGA_MAX as BAND_OMEGA_MAX,
     LOW_OMEGA as LOW_OMEGA,
@@ -21,6 +41,22 @@ from ._waves import (
 )
 
 __all__ = [
+    "CLAIM_IDS",
+    "MODEL_ESTIMATES",
+    "PANEL_ESTIMATES",
+    "RESISTANCE_CLAIM_IDS",
+    "SHARE_TOLERANCE",
+    "THESIS_SAILING_SHARES",
+    "THESIS_STATIONARY_WAVE_SHARE",
+    "WaveStudy",
+    "attribute",
+    "slow_drift_runs",
+    "MAP_NAMES",
+    "map_axes",
+    "run_map",
+    "straight",
+    "verdict_change",
+    "verdict_maps",
     "forms_table",
     "sailing_forms",
     "BAND_OMEGA_MAX",

@@ -1,0 +1,123 @@
+"""The panel-method drift databases that ship with jaxtow, and the one way to name a drift
+source (`drift_source`).
+
+Barge 1 (the 76.2 × 24.4 × 5 m box) and Barge 2 (the raked barge) were solved with
+``jaxtow bem`` (Capytaine, docs/bem.md) at the mesh chosen by the stability-verdict mesh study
+(docs/bem.md, "Shipped databases"); each file records its mesh, solver, versions and every
+estimate used in its NetCDF attributes (`database_attrs`). Far field: Maruo/Newman momentum
+conservation from the Kochin functions; near field: Pinkster pressure integration, with the
+sectional moments the yaw-rate column of the wave-drift damping needs. The near field is the
+default, as the thesis advises for the yaw moment (its far-field counterpart is the most
+mesh-sensitive of the three).
+"""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+from importlib import resources
+
+from ._qtf import QTF
+
+#: The shipped hulls and the two drift methods of each.
+DATABASES = ("barge1", "barge2")
+DATABASE_METHODS = ("far_field", "near_field")
+#: The method `database` and every default drift source use.
+DEFAULT_METHOD = "near_field"
+#: The stand-in drift source's name (a QTF tabulated from the Kashiwagi waterline method).
+STANDIN = "standin"
+
+
+def _check(name: str, method: str) -> None:
+    if name not in DATABASES:
+        raise ValueError(f"parameter 'name': shipped databases are {DATABASES}, got {name!r}")
+    if method not in DATABASE_METHODS:
+        raise ValueError(f"parameter 'method': one of {DATABASE_METHODS}, got {method!r}")
+
+
+def database_file(name: str = "barge2", method: str = DEFAULT_METHOD):
+    """Path of a shipped database (NetCDF, `jaxtow.io.load_qtf` reads it)."""
+    _check(name, method)
+    return resources.files("jaxtow") / "data" / "qtf" / f"{name}_{method}.nc"
+
+
+@cache
+def _load(name: str, method: str):
+    import xarray as xr
+
+    from ..io import load_qtf
+
+    path = database_file(name, method)
+    with resources.as_file(path) as p:
+        attrs = dict(xr.load_dataset(p).attrs)
+        return load_qtf(p), attrs
+
+
+def database(name: str = "barge2", method: str = DEFAULT_METHOD) -> QTF:
+    """The shipped panel-method mean-drift `QTF` of ``name`` ("barge1" | "barge2") by
+    ``method`` ("far_field" | "near_field"), SI per ζa², β = 0 head seas over the full circle,
+    with the sectional moments. See the module docstring and `database_attrs`."""
+    return _load(name, method)[0]
+
+
+def database_attrs(name: str = "barge2", method: str = DEFAULT_METHOD) -> dict:
+    """The provenance of a shipped database: mesh, panel size and count, solver and versions,
+    the mass estimates, the mesh-study verdict, the command that reproduces it."""
+    out = dict(_load(name, method)[1])
+    for k in ("assumptions", "mesh_params"):
+        if isinstance(out.get(k), str):
+            try:
+                out[k] = json.loads(out[k])
+            except ValueError:
+                pass
+    return out
+
+
+def describe_database(name: str = "barge2", method: str = DEFAULT_METHOD) -> str:
+    """One line naming a shipped database for ``drift_source`` attributes and figures."""
+    a = database_attrs(name, method)
+    label = "near-field (pressure integration)" if method == "near_field" else "far-field"
+    return (
+        f"shipped {name} {label} panel QTF (jaxtow bem, Capytaine {a.get('capytaine_version', '?')}, "
+        f"{a.get('panel_size_m', '?')} m panels, {a.get('n_panels', '?')} hull panels)"
+    )
+
+
+def drift_source(spec=None, *, hull: str = "barge2"):
+    """(QTF, description) for a drift-source spec, the one way every study and command names
+    its drift forces:
+
+    * None or ``"near_field"`` / ``"far_field"``: the shipped database of ``hull`` by that
+      method (None: `DEFAULT_METHOD`);
+    * ``"barge1:far_field"`` etc.: a shipped database by hull and method;
+    * ``"standin"``: the documented stand-in (Kashiwagi waterline QTF of Barge 2,
+      `jaxtow.study.approximate_qtf`);
+    * a `QTF`: used as given ("user QTF");
+    * any other string: a QTF file (.nc/.csv jaxtow, .8/.9 WAMIT)."""
+    if isinstance(spec, QTF):
+        return spec, "user QTF"
+    if spec is None:
+        spec = DEFAULT_METHOD
+    if not isinstance(spec, str):
+        raise TypeError(f"parameter 'spec': a name, a path or a QTF, got {type(spec).__name__}")
+    if spec == STANDIN:
+        from ..study import APPROXIMATE_QTF, approximate_qtf
+
+        return approximate_qtf(), APPROXIMATE_QTF
+    name, _, method = spec.rpartition(":") if ":" in spec else (hull, "", spec)
+    if name in DATABASES and method in DATABASE_METHODS:
+        return database(name, method), describe_database(name, method)
+    if spec in DATABASES:
+        return database(spec, DEFAULT_METHOD), describe_database(spec, DEFAULT_METHOD)
+    from pathlib import Path
+
+    from ..io import load_qtf, read_wamit_drift
+
+    p = Path(spec)
+    if not p.exists():
+        raise ValueError(
+            f"drift source {spec!r}: not a shipped database ({', '.join(DATABASE_METHODS)}, "
+            f"'hull:method' with hull in {DATABASES}), not {STANDIN!r} and no such file"
+        )
+    q = load_qtf(p) if p.suffix in (".nc", ".csv") else read_wamit_drift(p)
+    return q, f"QTF file {spec}"
