@@ -306,9 +306,9 @@ def test_claims_table_has_a_column_per_source_and_form():
 def test_report_waves_writes_claims(tmp_path, capsys):
     """The whole report on a small grid, with two drift sources (the near field and the far
     field, which share compiled kernels; the default plan of three sources and two forms is
-    the test above): every claim under each, the attribution of every primary claim that
-    does not reproduce, the slowly varying drift runs, figures and datasets with their drift
-    source and validity, and claim numbers equal to the maps'."""
+    the test above) and without the attribution re-runs (too slow for CI on 2 cores): every
+    claim under each source, the slowly varying drift runs, figures and datasets with their
+    drift source and validity, and claim numbers equal to the maps'."""
     from jaxtow.cli import main
     from jaxtow.reports import CLAIM_IDS, RESISTANCE_CLAIM_IDS
 
@@ -324,8 +324,7 @@ def test_report_waves_writes_claims(tmp_path, capsys):
             str(SMALL["n_grid"]),
             "--t1",
             str(SMALL["t1"]),
-            "--attribution-n",
-            "5",
+            "--no-attribution",
             "--slow-drift-hours",
             "0.25",
             "--sources",
@@ -343,10 +342,7 @@ def test_report_waves_writes_claims(tmp_path, capsys):
     for c in claims:
         assert set(c) >= {"id", "claim", "measured", "reproduced", "drift_source"}
         assert isinstance(c["reproduced"], bool)
-        primary = (c["source_key"], c["sailing_form"]) == ("near_field", "aranha")
-        assert ("attribution" in c) == (primary and not c["reproduced"]), c["id"]
-        if "attribution" in c:
-            assert set(c["attribution"]["estimates"]) == {"draft", "a11", "a22", "a66", "EA"}
+        assert "attribution" not in c  # --no-attribution (the attribution re-runs cost CI minutes)
     table = (tmp_path / "claims.md").read_text()
     assert "panel far field, aranha" in table
     mp = jt.reports.straight(jt.io.load_dataset(tmp_path / "barge_2b_map_l0_omega.nc"))
