@@ -72,6 +72,19 @@ def test_near_vs_far_field_per_zone_is_the_documented_table():
         assert got[zone] == pytest.approx(v, rel=1e-6, abs=1e-12), zone
 
 
+def test_shipped_barge2_is_the_finest_mesh_of_the_documented_study():
+    """Barge 2 ships at the finest mesh of the verdict mesh study in the docs, and the table
+    says what that mesh changes (no stale docs)."""
+    study = json.loads((DOCS / "data" / "mesh_study.json").read_text())
+    sizes = [r["panel_size"] for r in study["rows"]]
+    assert len(sizes) >= 3 and min(sizes) <= 1.0
+    for method in jt.drift.DATABASE_METHODS:
+        a = database_attrs("barge2", method)
+        assert float(a["panel_size_m"]) == min(sizes)
+    last = study["rows"][-1]["near_field"]
+    assert last["fraction_of_points_changed"] < 0.01  # of all map points, 1.5 m -> 1 m
+
+
 def test_drift_source_names_every_source_and_rejects_the_rest(tmp_path):
     q, d = drift_source(None)
     assert q is database("barge2", "near_field") and "near-field" in d and "barge2" in d
@@ -81,7 +94,7 @@ def test_drift_source_names_every_source_and_rejects_the_rest(tmp_path):
     assert drift_source(q) == (q, "user QTF")
     path = tmp_path / "q.nc"
     jt.io.save_qtf(q, path)
-    assert drift_source(str(path))[1] == f"QTF file {path}"
+    assert drift_source(str(path))[1] == f"QTF file {path} (jaxtow NetCDF)"
     with pytest.raises(ValueError, match="drift source 'nonsense'"):
         drift_source("nonsense")
     with pytest.raises(ValueError, match="parameter 'name'"):
@@ -364,3 +377,36 @@ def test_report_waves_writes_claims(tmp_path, capsys):
     assert len(sd) == 2 and all(v["record_hours"] == 0.25 for v in sd.values())
     assert (tmp_path / "barge_2a_slow_drift.png").is_file()
     assert 0.0 <= summary["validity_share"]["barge_2a_map_l0_omega"]["physics_valid"] <= 1.0
+
+
+@pytest.mark.slow
+def test_attribution_reruns_the_claim_and_gives_the_gradient_at_its_critical_point():
+    """`attribute` on a small grid, with one estimate (the full set is the report's job): the
+    claim re-run at both ends of the estimate's plausible range, and, for a stability-margin
+    claim made to fail (its 2b map made unstable), ∂(max Re λ)/∂p at the point that decides
+    it and the linear change of each p that would bring max Re λ to the stable side."""
+    s = reports.WaveStudy(n=3, n_grid=101, t1=30.0)
+    maps = dict(s.maps_l0_omega)
+    bad = maps["2b"].copy(deep=True)
+    mr = bad["max_real"].values
+    mr[np.isfinite(mr)] = np.abs(mr[np.isfinite(mr)]) + 0.05
+    maps["2b"] = bad
+    s.__dict__["maps_l0_omega"] = maps  # the cached map, replaced
+    assert not s.claim("barge_2b_stays_stable")["reproduced"]
+    a = reports.attribute(s, "barge_2b_stays_stable", n=3, estimates=("EA",))
+    assert a["reproduced_at_attribution_grid"]  # the real maps are stable
+    assert set(a["estimates"]) == {"EA"}
+    for end in ("low", "high"):
+        r = a["estimates"]["EA"][end]
+        assert isinstance(r["reproduced"], bool) and 0.0 <= r["measured"]["fraction_stable"] <= 1.0
+    assert a["flipped_by"] == [
+        f"EA {e}" for e in ("low", "high") if not a["estimates"]["EA"][e]["reproduced"]
+    ]
+    g = a["gradient"]
+    assert g["wanted"] == "stable" and g["point"]["l0"] in s.axes["l0"]
+    target = -1.5 * jt.STABILITY_TOL
+    for name, row in g["parameters"].items():
+        assert np.isfinite(row["gradient"]) and row["gradient"] != 0.0, name
+        assert g["max_real"] + row["gradient"] * row["change_to_flip"] == pytest.approx(target)
+    with pytest.raises(ValueError, match="parameter 'estimates'"):
+        reports.attribute(s, "barge_2b_stays_stable", n=3, estimates=("KG",))

@@ -238,10 +238,44 @@ def claims_table(claims: list) -> str:
     return "\n".join(lines) + "\n"
 
 
+def file_options(pairs) -> dict:
+    """``--qtf-option KEY=VALUE`` pairs as reader options (numbers, ``x,y`` pairs, words)."""
+    from ..drift._database import FILE_OPTIONS
+
+    out: dict = {}
+    for pair in pairs:
+        key, eq, value = pair.partition("=")
+        if not eq or key not in FILE_OPTIONS:
+            raise SystemExit(
+                f"jaxtow report: --qtf-option {pair!r}: expected KEY=VALUE with KEY in {FILE_OPTIONS}"
+            )
+        parts = value.split(",")
+        try:
+            nums = [float(v) for v in parts]
+            out[key] = nums if len(nums) > 1 else (int(nums[0]) if key == "moment_set" else nums[0])
+        except ValueError:
+            out[key] = value
+    return out
+
+
+def _key(spec) -> str:
+    """The claims-table key of a drift source spec (a drift-file mapping: its file)."""
+    return spec if isinstance(spec, str) else str(spec["file"])
+
+
 def plan(args):
     """(primary source, sources, forms) of a report: the primary source and form first, then
     the others of ``--sources`` / ``--forms`` (default: all of `SOURCES`, aranha and thesis)."""
     primary = args.qtf or "near_field"
+    opts = getattr(args, "qtf_option", None) or []
+    if opts:
+        from pathlib import Path as _P
+
+        if not _P(primary).exists():
+            raise SystemExit(
+                f"jaxtow report: --qtf-option applies to a drift file; --qtf {primary!r} is none"
+            )
+        primary = dict(file=primary, **file_options(opts))
     srcs = args.sources.split(",") if args.sources else SOURCES
     fms = args.forms.split(",") if args.forms else ("aranha", "thesis")
     sources = [primary] + [s for s in srcs if s and s != primary]
@@ -267,7 +301,7 @@ def cmd_report(args):
         u_tug=presets.U_TUG_DEFAULT,
         xp=0.5,
         sailing_form=args.form,
-        sources={s: drift_source(s)[1] for s in sources},
+        sources={_key(s): drift_source(s)[1] for s in sources},
         forms=forms,
         assumptions={k: v["note"] for k, v in presets.ASSUMPTIONS.items()},
         plausible_ranges={k: v["note"] for k, v in presets.PLAUSIBLE_RANGES.items()},
@@ -282,12 +316,12 @@ def cmd_report(args):
                 else base.variant(qtf=s, form=f, progress=False)
             )
             for c in st.claims():
-                c["source_key"] = s
+                c["source_key"] = _key(s)
                 claims.append(c)
             if (s, f) == (primary, args.form):
                 _figures(st, out, summary, progress)
             print(
-                f"claims computed: {SOURCE_NAMES.get(s, s)}, {f} ({time.perf_counter() - t0:.0f} s)",
+                f"claims computed: {SOURCE_NAMES.get(_key(s), _key(s))}, {f} ({time.perf_counter() - t0:.0f} s)",
                 flush=True,
             )
     # attribution of every claim of the primary study that does not reproduce
@@ -295,7 +329,9 @@ def cmd_report(args):
     attributions = {}
     if args.attribution:
         for c in claims:
-            if (c["source_key"], c["sailing_form"]) == (primary, args.form) and not c["reproduced"]:
+            if (c["source_key"], c["sailing_form"]) == (_key(primary), args.form) and not c[
+                "reproduced"
+            ]:
                 a = W.attribute(base, c["id"], n=args.attribution_n, panel_variants=variants)
                 c["attribution"] = a
                 attributions[c["id"]] = a
@@ -351,8 +387,17 @@ def add_parser(sub):
         "--qtf",
         default=None,
         help="primary drift source: near_field (default: the shipped Barge 2 panel database), "
-        "far_field, standin (the Kashiwagi-waterline stand-in) or a QTF file (.nc/.csv jaxtow, "
-        ".8/.9 WAMIT)",
+        "far_field, standin (the Kashiwagi-waterline stand-in) or a drift file (.nc/.csv jaxtow, "
+        "a Capytaine drift .nc, .8/.9 WAMIT; half tables of symmetric hulls are completed, the "
+        "yaw moment is moved to the CoG of the WAMIT listing next to the file)",
+    )
+    r.add_argument(
+        "--qtf-option",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="reader option of a --qtf file (repeatable): ulen, rho, g, symmetry=auto|none, "
+        "symmetry_tol, reference_point=cog|origin|X,Y, moment_set=6|-6",
     )
     r.add_argument(
         "--sources",

@@ -82,7 +82,7 @@ def build(cfg: dict):
         )
     drift = tow_c.get("wave_drift", "near_field")
     kw = dict(wind_height=tow_c.get("wind_height"))
-    if drift in METHODS:
+    if isinstance(drift, str) and drift in METHODS:
         kw["method"] = drift
     else:
         from ..drift._database import drift_source

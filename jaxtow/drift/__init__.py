@@ -44,7 +44,12 @@ from ._methods import (
     wavelength_ratio as wavelength_ratio,
     zone as zone,
 )
-from ._qtf import QTF as QTF
+from ._qtf import (
+    QTF as QTF,
+    SYMMETRY_TOL as SYMMETRY_TOL,
+    FullQTF as FullQTF,
+    symmetry_residual as symmetry_residual,
+)
 from ._sailing import (
     FORMS as FORMS,
     irregular_sailing_drift as irregular_sailing_drift,
@@ -96,6 +101,9 @@ __all__ = [
     "wavelength_ratio",
     "zone",
     "QTF",
+    "FullQTF",
+    "SYMMETRY_TOL",
+    "symmetry_residual",
     "encounter_frequency",
     "FORMS",
     "irregular_sailing_drift",

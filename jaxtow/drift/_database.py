@@ -14,8 +14,10 @@ mesh-sensitive of the three).
 from __future__ import annotations
 
 import json
+from collections.abc import Mapping
 from functools import cache
 from importlib import resources
+from os import PathLike
 
 from ._qtf import QTF
 
@@ -93,13 +95,30 @@ def drift_source(spec=None, *, hull: str = "barge2"):
     * ``"standin"``: the documented stand-in (Kashiwagi waterline QTF of Barge 2,
       `jaxtow.study.approximate_qtf`);
     * a `QTF`: used as given ("user QTF");
-    * any other string: a QTF file (.nc/.csv jaxtow, .8/.9 WAMIT)."""
+    * any other string: a drift file (`jaxtow.io.read_qtf`: jaxtow .nc/.csv, a Capytaine
+      drift NetCDF, WAMIT .8/.9) read with the default options;
+    * a mapping {"file": PATH, **options}: the same file with the reader's options (ULEN,
+      ρ, g, reference_point, symmetry, symmetry_tol, moment_set; `jaxtow.io.read_drift_file`).
+
+    The description of a file says how it was read (its format, ULEN/ρ/g and where they came
+    from, the yaw moment's reference point, the symmetry completion)."""
     if isinstance(spec, QTF):
         return spec, "user QTF"
     if spec is None:
         spec = DEFAULT_METHOD
+    if isinstance(spec, Mapping):
+        opts = dict(spec)
+        path = opts.pop("file", None)
+        if not isinstance(path, (str, PathLike)):
+            raise ValueError(
+                f"parameter 'spec': a drift-file mapping needs 'file' = PATH, got {sorted(spec)}"
+            )
+        return _from_file(str(path), opts)
     if not isinstance(spec, str):
-        raise TypeError(f"parameter 'spec': a name, a path or a QTF, got {type(spec).__name__}")
+        raise TypeError(
+            f"parameter 'spec': a name, a path, a {{'file': ...}} mapping or a QTF, got "
+            f"{type(spec).__name__}"
+        )
     if spec == STANDIN:
         from ..study import APPROXIMATE_QTF, approximate_qtf
 
@@ -111,13 +130,41 @@ def drift_source(spec=None, *, hull: str = "barge2"):
         return database(spec, DEFAULT_METHOD), describe_database(spec, DEFAULT_METHOD)
     from pathlib import Path
 
-    from ..io import load_qtf, read_wamit_drift
-
-    p = Path(spec)
-    if not p.exists():
+    if not Path(spec).exists():
         raise ValueError(
             f"drift source {spec!r}: not a shipped database ({', '.join(DATABASE_METHODS)}, "
             f"'hull:method' with hull in {DATABASES}), not {STANDIN!r} and no such file"
         )
-    q = load_qtf(p) if p.suffix in (".nc", ".csv") else read_wamit_drift(p)
-    return q, f"QTF file {spec}"
+    return _from_file(spec, {})
+
+
+def describe_file(info: dict) -> str:
+    """One line saying how a drift file was read (from a reader's ``info``)."""
+    parts = [info.get("format", "drift file")]
+    for k in ("ulen", "rho", "g"):
+        if k in info:
+            v, where = info[k]
+            parts.append(f"{k} = {v:g} ({where})")
+    if "reference_point" in info:
+        ref, note = info["reference_point"]
+        parts.append(f"yaw about {note}")
+    if "symmetry" in info:
+        parts.append(str(info["symmetry"]))
+    if info.get("moment_set", 6) != 6:
+        parts.append(f"moment set I = {info['moment_set']}")
+    return f"QTF file {info['file']} (" + "; ".join(parts) + ")"
+
+
+#: The options of a drift-file spec (`drift_source`), those of `jaxtow.io.read_drift_file`.
+FILE_OPTIONS = ("ulen", "rho", "g", "symmetry", "symmetry_tol", "reference_point", "moment_set")
+
+
+def _from_file(path: str, options: dict):
+    from ..io import read_qtf
+
+    bad = sorted(set(options) - set(FILE_OPTIONS) - {"length"})
+    if bad:
+        raise ValueError(f"drift file {path}: unknown options {bad}; choose from {FILE_OPTIONS}")
+
+    q, info = read_qtf(path, **options)
+    return q, describe_file(info)

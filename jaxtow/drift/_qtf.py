@@ -32,6 +32,26 @@ from .._interp import hermite_cell, hermite_local, node_slope
 
 _COMPONENTS = ("fx", "fy", "nz")
 
+#: Tolerance of the symmetry test of `QTF.symmetric` and the file readers: the head- and
+#: following-sea sway force and yaw moment of a port-starboard symmetric hull, relative to
+#: the table's scale. Panel codes give them to round-off (1e-9 to 2e-6 of the scale in the
+#: WAMIT files users have); the asymmetric hulls among them exceed 1e-2.
+SYMMETRY_TOL = 1e-4
+
+
+def symmetry_residual(beta, fx, fy, nz, *, length: float = 1.0) -> float:
+    """The largest head-sea (β = 0) or following-sea (β = ±π) |Fy| or |Nz| of a table
+    ((nω, nβ) arrays, β in radians), relative to the scales of `QTF.symmetric`. Zero for a
+    port-starboard symmetric hull; inf if the table has neither heading."""
+    b = np.asarray(beta, float)
+    fx, fy, nz = (np.asarray(v, float) for v in (fx, fy, nz))
+    cols = np.flatnonzero(np.isclose(b, 0.0, atol=1e-9) | np.isclose(np.abs(b), math.pi, atol=1e-9))
+    if cols.size == 0:
+        return math.inf
+    sf = max(float(np.max(np.abs(fx))), float(np.max(np.abs(fy))), 1e-300)
+    sn = max(float(np.max(np.abs(nz))), float(length) * sf, 1e-300)
+    return max(float(np.max(np.abs(fy[:, cols]))) / sf, float(np.max(np.abs(nz[:, cols]))) / sn)
+
 
 class QTF(eqx.Module):
     """Mean-drift QTF table: ``omega`` (nω,) rad/s ascending > 0, ``beta`` (nβ,) rad
@@ -106,18 +126,41 @@ class QTF(eqx.Module):
         return self.sectional is not None
 
     @classmethod
-    def symmetric(cls, *, omega, beta, fx, fy, nz, sectional=None):
+    def symmetric(
+        cls,
+        *,
+        omega,
+        beta,
+        fx,
+        fy,
+        nz,
+        sectional=None,
+        tol: float | None = None,
+        length: float = 1.0,
+    ):
         """Complete a table given for 0 <= β <= βmax (radians) of a hull symmetric about its
         centreline: Fx(−β) = Fx(β), Fy(−β) = −Fy(β), Nz(−β) = −Nz(β); the sectional moments
-        (M_x,1, M_y,1, M_y,2), if given, have the same parities (even, odd, odd)."""
+        (M_x,1, M_y,1, M_y,2), if given, have the same parities (even, odd, odd).
+
+        The head-sea (β = 0) and, if given, following-sea (β = π) sway and yaw must vanish by
+        symmetry; a panel code gives them to round-off, not to zero, so they must lie within
+        ``tol`` (default `SYMMETRY_TOL`) of the table's scale: |Fy| <= tol·max(|Fx|, |Fy|)
+        and |Nz| <= tol·max(max|Nz|, ``length``·max(|Fx|, |Fy|)) (``length`` [m] keeps
+        the test meaningful for bodies with no yaw moment at all, e.g. a sphere). They are
+        then set to exactly zero. A table outside the tolerance is an asymmetric hull and is
+        refused (`symmetry_residual` measures it)."""
         b = np.asarray(beta, float)
-        if b[0] != 0.0 or np.any(np.diff(b) <= 0):
+        if b.ndim != 1 or b.size < 2 or b[0] != 0.0 or np.any(np.diff(b) <= 0):
             raise ValueError("parameter 'beta' must ascend from 0 for symmetry completion")
         fx, fy, nz = (np.asarray(v, float) for v in (fx, fy, nz))
-        if np.max(np.abs(fy[:, 0])) > 1e-9 * max(np.max(np.abs(fy)), 1e-300) or np.max(
-            np.abs(nz[:, 0])
-        ) > 1e-9 * max(np.max(np.abs(nz)), 1e-300):
-            raise ValueError("a symmetric hull has Fy = Nz = 0 in head seas (beta = 0)")
+        tol = SYMMETRY_TOL if tol is None else float(tol)
+        res = symmetry_residual(b, fx, fy, nz, length=length)
+        if not res <= tol:
+            raise ValueError(
+                "not a port-starboard symmetric hull: the head/following-sea sway force or yaw "
+                f"moment is {res:.2e} of the table's scale (tolerance {tol:.0e}, parameter "
+                "'tol'); give the full heading circle instead of symmetry completion"
+            )
         bb = np.concatenate([-b[:0:-1], b])
         following = abs(b[-1] - math.pi) < 1e-9
 
@@ -241,3 +284,77 @@ class QTF(eqx.Module):
         m1 = slope(j + 1, y4[:, 1], y4[:, 2], y4[:, 3])
         h = b[j + 1] - b[j]
         return hermite_cell(y4[:, 1], y4[:, 2], m0, m1, h, (beta - b[j]) / h)
+
+
+class FullQTF(eqx.Module):
+    """Difference-frequency QTF of the slowly varying drift: ``values`` (3, nω, nω, nβ)
+    complex, T_c(ω_i, ω_j, β) per ζa² [N/m², N·m/m²] for c = surge, sway, yaw, β the
+    unidirectional heading (jaxtow convention, radians), such that a sea of components
+    ζ = Re Σ_i A_i e^{iω_i t} gives F_c(t) = Re Σ_i Σ_j A_i A_j* T_c(ω_i, ω_j) e^{i(ω_i − ω_j)t}
+    (WAMIT's .12d convention). Hermitian: T(ω_j, ω_i) = conj T(ω_i, ω_j), so its diagonal is
+    real and is the mean drift (`diagonal`, `mean_drift`). `QTF` stays the mean-drift
+    container; this one drives `jaxtow.forces.SlowDriftForce` instead of Newman's
+    approximation."""
+
+    omega: Float[Array, " nw"]
+    beta: Float[Array, " nb"]
+    values: Array
+
+    def __init__(self, *, omega, beta, values):
+        w = np.asarray(omega, float)
+        b = np.atleast_1d(np.asarray(beta, float))
+        v = np.asarray(values, complex)
+        if w.ndim != 1 or w.size < 2 or not np.all(np.diff(w) > 0) or w[0] <= 0:
+            raise ValueError(
+                "parameter 'omega' must be a 1-D ascending grid of >= 2 positive frequencies"
+            )
+        if b.ndim != 1 or not np.all(np.diff(b) > 0):
+            raise ValueError("parameter 'beta' must be a 1-D ascending grid of headings [rad]")
+        if v.shape != (3, w.size, w.size, b.size):
+            raise ValueError(
+                f"parameter 'values' must have shape (3, nω, nω, nβ) = {(3, w.size, w.size, b.size)}, "
+                f"got {v.shape}"
+            )
+        if not np.all(np.isfinite(v)):
+            raise ValueError("parameter 'values' must be finite")
+        scale = max(float(np.max(np.abs(v))), 1e-300)
+        herm = float(np.max(np.abs(v - np.conj(np.swapaxes(v, 1, 2))))) / scale
+        if herm > 1e-6:
+            raise ValueError(
+                "parameter 'values': a difference-frequency QTF is Hermitian, T(w_j, w_i) = "
+                f"conj T(w_i, w_j); this one departs by {herm:.1e} of its scale"
+            )
+        self.omega, self.beta, self.values = jnp.asarray(w), jnp.asarray(b), jnp.asarray(v)
+
+    def diagonal(self):
+        """The mean drift T(ω, ω, β), real, shape (3, nω, nβ)."""
+        v = np.asarray(self.values)
+        return np.real(np.diagonal(v, axis1=1, axis2=2)).transpose(0, 2, 1)
+
+    def mean_drift(self) -> QTF:
+        """The diagonal as a mean-drift `QTF` (needs >= 2 headings)."""
+        d = self.diagonal()
+        if d.shape[-1] < 2:
+            raise ValueError(
+                "FullQTF.mean_drift: the QTF has one heading; a QTF table needs two or more "
+                "(use diagonal(), or read the file's mean-drift output)"
+            )
+        return QTF(omega=self.omega, beta=self.beta, fx=d[0], fy=d[1], nz=d[2])
+
+    def at(self, omega):
+        """The table at component frequencies ``omega`` (n,) by bilinear interpolation in
+        (ω_i, ω_j): complex (3, n, n, nβ), and a mask (n,) of the components inside the
+        table's frequency range (outside it the values are those of the nearest edge)."""
+        w = np.asarray(omega, float)
+        t = np.asarray(self.omega)
+        inside = (w >= t[0]) & (w <= t[-1])
+        k = np.clip(np.searchsorted(t, w, side="right") - 1, 0, t.size - 2)
+        f = np.clip((w - t[k]) / (t[k + 1] - t[k]), 0.0, 1.0)
+        v = np.asarray(self.values)
+        # interpolate rows then columns
+        rows = v[:, k] * (1 - f)[None, :, None, None] + v[:, k + 1] * f[None, :, None, None]
+        out = (
+            rows[:, :, k] * (1 - f)[None, None, :, None]
+            + rows[:, :, k + 1] * f[None, None, :, None]
+        )
+        return out, inside

@@ -149,8 +149,20 @@ class SlowDriftForce(AbstractExternalForce):
 
     evaluated in O(n). Its time average is Σ a_i² T_i = 2 ∫ S T dω, the mean drift. Newman's
     approximation needs T to vary slowly with ω over the difference frequencies that matter
-    (the tow's slow yaw and sway periods); the full difference-frequency QTF is not used.
-    Build with `seeded`; ``validity`` is that of the mean force."""
+    (the tow's slow yaw and sway periods).
+
+    With a full difference-frequency QTF (``seeded(..., full_qtf=...)``, a
+    `jaxtow.drift.FullQTF`) the force adds what Newman's approximation leaves out,
+
+        ΔF(t) = Re Σ_i Σ_j z_i z_j* D_ij(β),   D_ij = T_ij − (T_ii + T_jj)/2,
+
+    with T_ij the full QTF at the component frequencies (bilinear in (ω_i, ω_j)) and D
+    linear in β between its headings (clamped outside them, periodic on a full circle). So
+    the mean and its forward-speed correction stay those of the mean-drift table (D_ii =
+    0), and the off-diagonal terms are the full QTF's (at zero speed). Components outside
+    the full QTF's frequency range keep Newman's approximation (``full_qtf_energy`` gives
+    the share of the spectrum inside it). Build with `seeded`; ``validity`` is that of the
+    mean force."""
 
     qtf: QTF
     spectrum: AbstractSpectrum
@@ -160,6 +172,9 @@ class SlowDriftForce(AbstractExternalForce):
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")
     yaw_rate: bool = eqx.field(static=True, default=True)
+    offdiagonal: Array | None = None  # (nβ, 3, n, n) complex D_ij of the full QTF
+    offdiagonal_beta: Array | None = None  # (nβ,) its headings [rad]
+    full_qtf_energy: Array | None = None  # share of Σ a_i² inside the full QTF's range
 
     def __check_init__(self):
         check_form(self.form)
@@ -176,8 +191,10 @@ class SlowDriftForce(AbstractExternalForce):
         omega_range=(0.1, 4.0),
         form: str = "aranha",
         yaw_rate: bool = True,
+        full_qtf=None,
     ) -> SlowDriftForce:
-        """Components from ``seed``: ``n`` bins over ``omega_range`` [rad/s]."""
+        """Components from ``seed``: ``n`` bins over ``omega_range`` [rad/s]; ``full_qtf``
+        (a `jaxtow.drift.FullQTF`) replaces Newman's off-diagonal terms by the full QTF's."""
         import numpy as np
 
         if not (isinstance(n, int) and n >= 2):
@@ -190,6 +207,24 @@ class SlowDriftForce(AbstractExternalForce):
         rng = np.random.default_rng(seed)
         edges = np.linspace(lo, hi, n + 1)
         w = edges[:-1] + rng.uniform(size=n) * np.diff(edges)
+        off = off_b = share = None
+        if full_qtf is not None:
+            from ..drift._qtf import FullQTF
+
+            if not isinstance(full_qtf, FullQTF):
+                raise TypeError(
+                    f"parameter 'full_qtf' must be a jaxtow.drift.FullQTF, got {type(full_qtf).__name__}"
+                )
+            T, inside = full_qtf.at(w)  # (3, n, n, nβ)
+            d = np.real(np.diagonal(T, axis1=1, axis2=2))  # (3, nβ, n)
+            D = T - 0.5 * (
+                d.transpose(0, 2, 1)[:, :, None, :] + d.transpose(0, 2, 1)[:, None, :, :]
+            )
+            D = np.where((inside[:, None] & inside[None, :])[None, :, :, None], D, 0.0)
+            off = jnp.asarray(np.moveaxis(D, -1, 0))
+            off_b = full_qtf.beta
+            a2 = 2.0 * np.asarray(spectrum(jnp.asarray(w))) * np.diff(edges)
+            share = jnp.asarray(float(np.sum(a2[inside]) / max(np.sum(a2), 1e-300)))
         return cls(
             qtf=qtf,
             spectrum=spectrum,
@@ -199,6 +234,9 @@ class SlowDriftForce(AbstractExternalForce):
             scales=scales,
             form=form,
             yaw_rate=yaw_rate,
+            offdiagonal=off,
+            offdiagonal_beta=off_b,
+            full_qtf_energy=share,
         )
 
     def amplitudes(self):
@@ -219,7 +257,24 @@ class SlowDriftForce(AbstractExternalForce):
         we = self.omega + self.omega**2 * U / G
         z = self.amplitudes() * jnp.exp(1j * (we * t * L / U + self.phase))
         A = jnp.sum(z[:, None] * T, axis=0)
-        return jnp.real(A * jnp.conj(jnp.sum(z)))
+        F = jnp.real(A * jnp.conj(jnp.sum(z)))
+        if self.offdiagonal is None:
+            return F
+        D = self._offdiagonal_at(-psi)  # (3, n, n)
+        return F + jnp.real(jnp.einsum("i,cij,j->c", z, D, jnp.conj(z)))
+
+    def _offdiagonal_at(self, beta):
+        """D(β), linear between the full QTF's headings; clamped, or periodic on a circle."""
+        b, D = self.offdiagonal_beta, self.offdiagonal
+        assert b is not None and D is not None
+        if b.shape[0] == 1:
+            return D[0]
+        full = (jnp.abs(b[0] + jnp.pi) < 1e-9) & (jnp.abs(b[-1] - jnp.pi) < 1e-9)
+        beta = jnp.where(full, jnp.mod(beta + jnp.pi, 2 * jnp.pi) - jnp.pi, beta)
+        beta = jnp.clip(beta, b[0], b[-1])
+        k = jnp.clip(jnp.searchsorted(b, beta, side="right") - 1, 0, b.shape[0] - 2)
+        f = (beta - b[k]) / (b[k + 1] - b[k])
+        return D[k] * (1 - f) + D[k + 1] * f
 
     def __call__(self, t, y: Float[Array, "6"], model) -> Float[Array, "3"]:
         return self.scales.nondimensional(self.dimensional(t, y))

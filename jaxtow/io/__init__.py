@@ -9,11 +9,17 @@ from .design import design_dataset as design_dataset, sensitivity_dataset as sen
 from .drift_methods import drift_methods_dataset as drift_methods_dataset
 from .resistance import resistance_dataset as resistance_dataset
 from .wamit import (
+    complete_table as complete_table,
     load_qtf as load_qtf,
     qtf_from_capytaine as qtf_from_capytaine,
+    read_capytaine_drift as read_capytaine_drift,
+    read_drift_file as read_drift_file,
+    read_qtf as read_qtf,
     read_wamit_drift as read_wamit_drift,
+    read_wamit_qtf as read_wamit_qtf,
     save_qtf as save_qtf,
     write_wamit_drift as write_wamit_drift,
+    write_wamit_qtf as write_wamit_qtf,
 )
 
 __all__ = [
@@ -24,9 +30,15 @@ __all__ = [
     "sensitivity_dataset",
     "drift_methods_dataset",
     "resistance_dataset",
+    "complete_table",
     "load_qtf",
     "qtf_from_capytaine",
+    "read_capytaine_drift",
+    "read_drift_file",
+    "read_qtf",
     "read_wamit_drift",
+    "read_wamit_qtf",
     "save_qtf",
     "write_wamit_drift",
+    "write_wamit_qtf",
 ]

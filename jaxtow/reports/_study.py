@@ -39,6 +39,13 @@ CLAIM_IDS = (
 )
 #: The resistance claims of chapter 7.1-7.2.
 RESISTANCE_CLAIM_IDS = ("stationary_wave_share", "sailing_wave_share")
+#: The claims decided by the sign of max Re λ at one map point (`WaveStudy.critical_point`).
+MARGIN_CLAIM_IDS = (
+    "barge_2b_stays_stable",
+    "irregular_sea_keeps_2a_stable",
+    "moderate_waves_stabilise_2a",
+    "low_frequency_waves_keep_calm_verdict",
+)
 #: Thesis numbers of the resistance claims: the largest stationary wave share over the
 #: physical Tp range (sea state 1, fig. 7.2b), and the shares (wind, waves, current) of the
 #: sailing tow at Tp = 7 s (sea state 2, fig. 7.4b) at U = 0, 2 and 3.5 m/s [%].
@@ -484,7 +491,12 @@ def _range_of(name: str) -> dict:
 
 
 def attribute(
-    study: WaveStudy, cid: str, *, n: int | None = None, panel_variants: dict | None = None
+    study: WaveStudy,
+    cid: str,
+    *,
+    n: int | None = None,
+    panel_variants: dict | None = None,
+    estimates=MODEL_ESTIMATES,
 ) -> dict:
     """Attribution of claim ``cid`` of ``study`` (normally one that does not reproduce):
 
@@ -499,14 +511,19 @@ def attribute(
       change of each p that would bring max Re λ to the other side of the tolerance there
       (a linear estimate);
     * ``flipped_by``: the estimates whose range ends flip the claim.
+
+    ``estimates``: the model estimates to re-run (default all of `MODEL_ESTIMATES`).
     """
+    bad = [e for e in estimates if e not in MODEL_ESTIMATES]
+    if bad:
+        raise ValueError(f"parameter 'estimates': {bad} not in {MODEL_ESTIMATES}")
     n = n or max(study.n // 2, 9)
     base = study.variant(n=n, specialise=False, progress=False)
     out: dict = dict(id=cid, grid_points_per_axis=n)
     ref = base.claim(cid)
     out["reproduced_at_attribution_grid"] = ref["reproduced"]
     est = {}
-    for name in MODEL_ESTIMATES:
+    for name in estimates:
         rng = _range_of(name)
         est[name] = {}
         for end in ("low", "high"):
@@ -540,7 +557,11 @@ def attribute(
     out["panel_estimates"] = pan
     crit = study.critical_point(cid)
     if crit is None:
-        out["gradient"] = "not a stability margin (counts, path widths or shares): no gradient"
+        out["gradient"] = (
+            "no map point decides the claim against it: no gradient"
+            if cid in MARGIN_CLAIM_IDS
+            else "not a stability margin (counts, path widths or shares): no gradient"
+        )
     else:
         from ..design import sensitivity_arrays
 
