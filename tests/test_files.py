@@ -317,6 +317,13 @@ def test_unreadable_lines_cut_records_and_duplicates_name_the_line(tmp_path):
     f.write_text("\n".join(body + [body[3]]) + "\n")
     with pytest.raises(ValueError, match=r"line 19: duplicate record .* of line 4"):
         jt.io.read_wamit_drift(f, ulen=1.0)
+    # a table listing both 0 and 360 deg (the same heading, the same values) is not a duplicate
+    q = jt.io.read_wamit_drift(
+        _write(tmp_path, _records(heads=(0.0, 90.0, 180.0, 270.0)), "a.8"), ulen=1.0
+    )
+    both = _records(heads=(0.0, 90.0, 180.0, 270.0)) + _records(heads=(360.0,))
+    q2 = jt.io.read_wamit_drift(_write(tmp_path, both, "b.8"), ulen=1.0)
+    np.testing.assert_array_equal(np.asarray(q2.values), np.asarray(q.values))
 
 
 @pytest.mark.parametrize("bad", [0.0, -1.0, float("nan")])

@@ -306,15 +306,20 @@ def read_drift_file(
     ws, bs = np.unique(omega), np.unique(bdeg)
     vals = np.full((3, ws.size, bs.size), np.nan)
     where = np.zeros((3, ws.size, bs.size), int)
-    for w, b, mode, re_, ln in zip(omega, bdeg, a[:, 3].astype(int), a[:, 6], lines):
+    raw = np.zeros((3, ws.size, bs.size))
+    for w, b, bw, mode, re_, ln in zip(omega, bdeg, a[:, 1], a[:, 3].astype(int), a[:, 6], lines):
         c, i, j = modes[mode], np.searchsorted(ws, w), np.searchsorted(bs, b)
+        k = 1 if abs(mode) <= 3 else 2
         if where[c, i, j]:
+            prev = vals[c, i, j] / (r * gg * L**k)  # in the file's units
+            same = abs(re_ - prev) <= 1e-9 * max(abs(re_), abs(prev)) + 1e-12
+            if bw != raw[c, i, j] and same:  # the same heading twice, e.g. 0 and 360 deg
+                continue
             raise ValueError(
                 f"{path}, line {ln}: duplicate record (period {2 * math.pi / w:g} s, heading "
                 f"{b + 180.0:g} deg, mode {mode}) of line {where[c, i, j]}"
             )
-        where[c, i, j] = ln
-        k = 1 if abs(mode) <= 3 else 2
+        where[c, i, j], raw[c, i, j] = ln, bw
         vals[c, i, j] = re_ * r * gg * L**k
     if np.isnan(vals).any():
         c, i, j = (int(v[0]) for v in np.nonzero(np.isnan(vals)))
