@@ -3,11 +3,11 @@
 
     # 1. the panel solves (background; about 10 / 20 / 60 min on 2 cores at 2 / 1.5 / 1 m):
     for p in 2 1.5 1; do jaxtow bem barge2 --panel-size $p --out RUNS/barge2_p$p; done
-    for p in 2 1.5 1; do jaxtow bem barge1 --panel-size $p --out RUNS/barge1_p$p; done
+    jaxtow bem barge1 --panel-size 1.5 --out RUNS/barge1_p1.5
     # 2. the verdict study and the table (docs/data/mesh_study.{json,md}):
     python benchmarks/mesh_study.py --runs RUNS [--n 41] [--write]
     # 3. ship the chosen mesh (jaxtow/data/qtf/{barge1,barge2}_{far,near}_field.nc):
-    python benchmarks/mesh_study.py --runs RUNS --ship barge2=1 --ship barge1=1
+    python benchmarks/mesh_study.py --runs RUNS --ship barge2=1 --ship barge1=1.5
 
 For every Barge 2 mesh of RUNS and each drift method, the four maps of the wave study
 (`jaxtow.reports.verdict_maps`: 2a and 2b over (l0', ω) and (l0', Tp)); between successive

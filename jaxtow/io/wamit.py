@@ -443,7 +443,7 @@ def read_wamit_qtf(
             f"{bs[kb] + 180.0:g} deg (or its conjugate pair)"
         )
     ref, ref_note = _reference(reference_point, listing)
-    vals[2] = vals[2] - (ref[0] * vals[1] - ref[1] * vals[0])
+    vals[2] = _shift_yaw(vals[0], vals[1], vals[2], ref)
     info = dict(
         file=str(path),
         format="WAMIT difference-frequency QTF (.12d)",
