@@ -38,6 +38,7 @@ from . import (
     study as study,
     waves as waves,
 )
+from ._compile_cache import enable_compile_cache as enable_compile_cache
 from ._dynamics import (
     STATE_NAMES as STATE_NAMES,
     ForceBreakdown as ForceBreakdown,
@@ -89,6 +90,7 @@ from ._stability import (
     jacobian as jacobian,
     max_real_eigenvalue as max_real_eigenvalue,
     routh_hurwitz_stable as routh_hurwitz_stable,
+    spectral_abscissa as spectral_abscissa,
     stability as stability,
 )
 from ._sweep import sweep as sweep, sweep_arrays as sweep_arrays
@@ -142,6 +144,8 @@ __all__ = [
     "hurwitz_determinants",
     "jacobian",
     "max_real_eigenvalue",
+    "spectral_abscissa",
+    "enable_compile_cache",
     "routh_hurwitz_stable",
     "stability",
     "sweep",

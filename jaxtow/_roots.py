@@ -47,10 +47,18 @@ def bisect(fn, lo, hi, args=None, *, atol: float = 0.0, rtol: float = 0.0, max_s
     """Root of ``fn(x, args)`` in the bracket [lo, hi] (a sign change) by
     `optimistix.Bisection`; returns ``(x, successful)``. The default tolerances (0) run to
     the floating-point limit of the bracket and stop at ``max_steps`` (then ``successful``
-    is False but ``x`` is the converged midpoint): pass the accuracy you need."""
-    solver = optx.Bisection(rtol=rtol, atol=atol, flip="detect")
+    is False but ``x`` is the converged midpoint): pass the accuracy you need. A bracket
+    without a sign change gives ``successful`` False.
+
+    The orientation of the bracket is taken from fn(lo) and fn(hi) here, not by the
+    solver's ``flip="detect"``: that check is an `equinox.error_if`, a host callback, and a
+    compiled program holding one is never written to JAX's persistent compilation cache
+    (`jaxtow.enable_compile_cache`)."""
+    f_lo, f_hi = fn(lo, args), fn(hi, args)
+    sign = jnp.where(f_lo < 0, 1.0, -1.0)  # sign * fn rises through the bracket
+    solver = optx.Bisection(rtol=rtol, atol=atol, flip=False)
     sol = optx.root_find(
-        fn,
+        lambda x, a: sign * fn(x, a),
         solver,
         0.5 * (lo + hi),
         args,
@@ -58,7 +66,8 @@ def bisect(fn, lo, hi, args=None, *, atol: float = 0.0, rtol: float = 0.0, max_s
         max_steps=max_steps,
         throw=False,
     )
-    return sol.value, sol.result == optx.RESULTS.successful
+    bracketed = (f_lo < 0) != (f_hi < 0)
+    return sol.value, (sol.result == optx.RESULTS.successful) & bracketed
 
 
 def newton(

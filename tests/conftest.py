@@ -2,6 +2,9 @@ import os
 
 # figures are written to files in the tests; the package itself never picks a backend
 os.environ.setdefault("MPLBACKEND", "Agg")
+# the command line turns on a persistent compilation cache; the suite measures cold runs and
+# must not write into the user's cache (the cache's own test sets a folder explicitly)
+os.environ["JAXTOW_COMPILE_CACHE"] = "off"
 
 import jax  # noqa: E402
 

@@ -110,10 +110,12 @@ def test_map_subcommand_and_overrides(tmp_path, capsys):
             "--out",
             str(tmp_path),
             "--quiet",
+            "--eigenvalues",
         ]
     )
     ds = load_dataset(tmp_path / "barge_2a_l0_EA.nc")
     assert ds.attrs["vessel_a22"] == 0.3
+    assert ds["eig_real"].dims[-1] == "mode" and ds.attrs["eigenvalue_method"] == "lapack"
     assert (tmp_path / "barge_2a_l0_EA_map.png").exists()
 
 

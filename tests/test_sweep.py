@@ -15,9 +15,16 @@ from jaxtow.io import load_dataset, save_dataset
 
 
 def test_sweep_dataset_is_labelled(barge_2a, tmp_path):
-    ds = jt.sweep(model(barge_2a), {"xp": np.linspace(0.1, 0.6, 6), "l0": np.array([0.5, 2.5])})
+    grid = {"xp": np.linspace(0.1, 0.6, 6), "l0": np.array([0.5, 2.5])}
+    ds = jt.sweep(model(barge_2a), grid, eigenvalues=True)
     assert ds["max_real"].dims == ("xp", "l0", "equilibrium")
     assert ds["eig_real"].dims == ("xp", "l0", "equilibrium", "mode")
+    # by default a map holds max Re λ alone, from the pure-JAX spectral abscissa
+    lean = jt.sweep(model(barge_2a), grid)
+    assert "eig_real" not in lean and lean.attrs["eigenvalue_method"] == "routh"
+    np.testing.assert_allclose(lean["max_real"], ds["max_real"], atol=1e-10)
+    with pytest.raises(ValueError, match="eig_method"):
+        jt.sweep_arrays(model(barge_2a), grid, eigenvalues=True, eig_method="routh")
     assert ds["xp"].attrs["units"] == "1" and "attachment" in ds["xp"].attrs["long_name"]
     assert ds["psi"].attrs["units"] == "rad"
     assert "draft" in json.loads(ds.attrs["assumed_values"])
@@ -88,12 +95,16 @@ _SHARD_SCRIPT = textwrap.dedent("""
     m = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.presets.default_towline())
     grid = {"xp": np.linspace(0.0, 0.6, 13), "l0": np.linspace(0.2, 2.5, 7)}
     a = jt.sweep_arrays(m, grid, chunk_size=32)                         # 4 devices
-    # several CPU devices select the LAPACK-free eigenvalues; compare like with like: the
-    # same per-device program (8 points per device) must give bit-identical results
-    b = jt.sweep_arrays(m, grid, chunk_size=8, devices=jax.devices()[:1], eig_method="polynomial")
+    # the default pure-JAX spectral abscissa shards; compare like with like: the same
+    # per-device program (8 points per device) must give bit-identical results
+    b = jt.sweep_arrays(m, grid, chunk_size=8, devices=jax.devices()[:1], eig_method="routh")
     c = jt.sweep_arrays(m, grid, chunk_size=32, devices=jax.devices()[:1], eig_method="lapack")
-    np.testing.assert_allclose(a["max_real"], c["max_real"], atol=1e-8)
-    assert a["_eig_method"] == "polynomial"
+    np.testing.assert_allclose(a["max_real"], c["max_real"], atol=1e-9)
+    assert a["_eig_method"] == "routh"
+    # with every eigenvalue wanted, several CPU devices select the LAPACK-free polynomial roots
+    e = jt.sweep_arrays(m, grid, chunk_size=32, eigenvalues=True)
+    assert e["_eig_method"] == "polynomial"
+    np.testing.assert_allclose(e["max_real"], c["max_real"], atol=1e-8)
     # a large chunk over 4 CPU devices completes (LAPACK here deadlocked in OpenBLAS)
     big = {"xp": np.linspace(0.0, 0.6, 61), "l0": np.linspace(0.2, 2.5, 47)}
     jt.sweep_arrays(m, big)

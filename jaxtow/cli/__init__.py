@@ -38,6 +38,12 @@ def build_parser() -> argparse.ArgumentParser:
         description="Towing stability of a barge on an elastic towline (JAX). "
         "Non-dimensional inputs use the thesis scales: lengths by L, stiffness by 0.5*rho*T*L*U_tug^2.",
     )
+    p.add_argument(
+        "--no-compile-cache",
+        action="store_true",
+        help="do not use the persistent compilation cache (default: on, in "
+        "$JAXTOW_COMPILE_CACHE or ~/.cache/jaxtow/xla; JAXTOW_COMPILE_CACHE=off also disables it)",
+    )
     sub = p.add_subparsers(dest="command", required=True)
     for module in SUBCOMMANDS:
         module.add_parser(sub)
@@ -46,8 +52,19 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv=None) -> int:
     """Entry point of the ``jaxtow`` command."""
+    argv = list(sys.argv[1:] if argv is None else argv)
+    no_cache = "--no-compile-cache" in argv  # accepted before or after the subcommand
+    argv = [a for a in argv if a != "--no-compile-cache"]
     args = build_parser().parse_args(argv)
     import matplotlib
+
+    from .._compile_cache import enable_compile_cache
+
+    if not (no_cache or args.no_compile_cache):
+        try:
+            enable_compile_cache()
+        except ValueError as e:
+            raise SystemExit(f"error: {e}") from None
 
     matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
     args.func(args)

@@ -27,6 +27,7 @@ def cmd_map(args):
             progress=not args.quiet,
             chunk_size=args.chunk_size,
             max_roots=args.max_roots,
+            eigenvalues=args.eigenvalues,
         )
     except ValueError as e:
         raise SystemExit(f"error: {e}") from None
@@ -53,6 +54,12 @@ def add_parser(sub):
         action="append",
         metavar=("NAME", "LO", "HI", "N"),
         help="swept parameter and its grid, e.g. --param l0 0.2 2.5 100 (repeatable)",
+    )
+    m.add_argument(
+        "--eigenvalues",
+        action="store_true",
+        help="store every eigenvalue (eig_real, eig_imag; LAPACK) besides max Re λ "
+        "(default: max Re λ alone, by the faster pure-JAX spectral abscissa)",
     )
     m.add_argument(
         "--method",

@@ -81,6 +81,15 @@ class WaveStudy:
     factors: tuple = ()
     specialise: bool = False
     progress: bool = False
+    #: use the persistent compilation cache (`jaxtow.enable_compile_cache`; its folder and
+    #: switch come from the environment): the study's wave kernels compile once per machine
+    compile_cache: bool = True
+
+    def __post_init__(self):
+        if self.compile_cache:
+            from .._compile_cache import enable_compile_cache
+
+            enable_compile_cache()
 
     # ------------------------------------------------------------------ building blocks
     @cached_property

@@ -1,0 +1,129 @@
+"""Benchmark: the cost of jaxtow's panel pipeline on top of Capytaine's own solves.
+
+Both sides solve the same problems on the same mesh (Barge 2, the built-in config at
+``--panel-size``, the reflection symmetries used by both), frequencies and headings, in the
+same process: Capytaine alone runs ``BEMSolver(method="indirect").solve_all`` on the 6
+radiation and every diffraction problem of each frequency; jaxtow runs `jaxtow.bem.bem_drift`
+(the same solves, then RAOs, far-field Kochin drift, near-field pressure integration with
+sectional moments, one NetCDF file per frequency in a fresh cache). Then the command line,
+``jaxtow bem`` on that config, is run twice as a user would: into an empty cache, and again
+(every frequency read back from the cache; the target is a few seconds, most of it Python
+and JAX imports and the figures).
+
+    python benchmarks/bench_bem_pipeline.py [--panel-size 3] [--n-omega 4] [--json out.json]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from jaxtow import bem
+from jaxtow.bem.solve import DOFS, rigid_body, symmetric_capytaine_mesh
+from jaxtow.cli.bem import build, read_config
+
+RUN = "import sys; from jaxtow.cli import main; sys.exit(main())"
+
+
+def capytaine_alone(mesh, body, omega, beta):
+    import capytaine as cpt
+
+    hull, lid, _ = symmetric_capytaine_mesh(mesh)
+    cbody = cpt.FloatingBody(
+        mesh=hull,
+        lid_mesh=lid,
+        dofs=cpt.rigid_body_dofs(rotation_center=body.cog),
+        center_of_mass=body.cog,
+        mass=body.mass,
+    )
+    solver = cpt.BEMSolver(method="indirect")
+    for w in omega:
+        env = dict(omega=float(w), water_depth=math.inf)
+        rad = [cpt.RadiationProblem(body=cbody, radiating_dof=d, **env) for d in DOFS]
+        dif = [
+            cpt.DiffractionProblem(body=cbody, wave_direction=float(b + math.pi), **env)
+            for b in beta
+        ]
+        solver.solve_all(rad + dif, keep_details=True, progress_bar=False, _check_wavelength=False)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    ap.add_argument("--panel-size", type=float, default=3.0)
+    ap.add_argument("--n-omega", type=int, default=4)
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args(argv)
+    cfg = read_config("barge2")
+    cfg["waves"]["omega"] = [0.3, 1.5, args.n_omega]
+    cfg["hull"]["panel_size"] = args.panel_size
+    builder, size, omega, beta, kw = build(cfg, args.panel_size)
+    mesh = builder(size)
+    body = rigid_body(
+        mesh, kw.get("cog_z"), radii=kw.get("radii"), roll_damping=kw.get("roll_damping")
+    )
+    print(f"{mesh.n_panels} hull panels, {omega.size} frequencies x {beta.size} headings")
+
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        capytaine_alone(mesh, body, omega[:1], beta[:1])  # warm Capytaine (its compiled kernels)
+        t = time.perf_counter()
+        capytaine_alone(mesh, body, omega, beta)
+        t_cpt = time.perf_counter() - t
+        t = time.perf_counter()
+        bem.bem_drift(mesh, omega, beta, body=body, cache_dir=tmp / "api_cache")
+        t_jt = time.perf_counter() - t
+        print(
+            f"Capytaine alone {t_cpt:.2f} s | jaxtow bem_drift {t_jt:.2f} s | "
+            f"ratio {t_jt / t_cpt:.2f}x (target <= 1.2x)"
+        )
+
+        toml = tmp / "barge2_small.toml"
+        toml.write_text(
+            "\n".join(
+                [
+                    "[hull]",
+                    'kind = "barge2"',
+                    f"panel_size = {args.panel_size}",
+                    "[mass]",
+                    f"cog_z = {cfg['mass']['cog_z']}",
+                    f"roll_damping = {cfg['mass']['roll_damping']}",
+                    "[waves]",
+                    f"omega = [0.3, 1.5, {args.n_omega}]",
+                    "beta_deg = [0, 180, 25]",
+                ]
+            )
+        )
+        cli = [sys.executable, "-c", RUN, "bem", str(toml), "--out", str(tmp / "out"), "--quiet"]
+        times = []
+        for _ in range(2):
+            t = time.perf_counter()
+            subprocess.run(cli, check=True, capture_output=True)
+            times.append(time.perf_counter() - t)
+        print(
+            f"jaxtow bem (command line): {times[0]:.2f} s into an empty cache, {times[1]:.2f} s cached"
+        )
+    res = dict(
+        hull_panels=mesh.n_panels,
+        frequencies=int(omega.size),
+        headings=int(beta.size),
+        capytaine_s=t_cpt,
+        jaxtow_s=t_jt,
+        ratio=t_jt / t_cpt,
+        cli_first_s=times[0],
+        cli_cached_s=times[1],
+    )
+    if args.json:
+        Path(args.json).write_text(json.dumps(res, indent=2))
+    return res
+
+
+if __name__ == "__main__":
+    main()
