@@ -179,7 +179,10 @@ def hessenberg(A: Float[Array, "n n"]) -> Float[Array, "n n"]:
     idx = jnp.arange(n)
     for k in range(n - 2):  # static n: one reflector per column
         x = jnp.where(idx > k, H[:, k], 0.0)
-        alpha = jnp.sqrt(jnp.sum(x * x))
+        ss = jnp.sum(x * x)
+        # a column already reduced (ss = 0: structural zeros of the tow Jacobian) must not
+        # give sqrt's infinite derivative at 0 (NaN gradients of everything downstream)
+        alpha = jnp.where(ss > 0, jnp.sqrt(jnp.where(ss > 0, ss, 1.0)), 0.0)
         x1 = H[k + 1, k]
         v = x.at[k + 1].add(jnp.where(x1 >= 0, alpha, -alpha))
         vv = jnp.sum(v * v)

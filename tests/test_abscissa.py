@@ -139,3 +139,17 @@ def test_abscissa_gradient(barge_2b):
     assert g == pytest.approx(fd, rel=1e-6)
     with pytest.raises(ValueError, match="'method'"):
         jt.max_real_eigenvalue(m0, jnp.zeros(6), method="qr")
+
+
+def test_characteristic_polynomial_gradient_with_a_reduced_column():
+    """A column already in Hessenberg form (structural zeros, as in the tow Jacobian) keeps
+    the coefficients' derivatives finite and equal to finite differences."""
+    A = np.random.default_rng(0).normal(size=(6, 6))
+    A[2:, 0] = 0.0
+    g = np.asarray(jax.jacfwd(jt.characteristic_polynomial)(jnp.asarray(A)))
+    assert np.all(np.isfinite(np.asarray(jax.jacrev(jt.characteristic_polynomial)(jnp.asarray(A)))))
+    E = np.zeros((6, 6))
+    E[3, 1] = 1.0
+    h = 1e-6
+    cp = lambda M: np.asarray(jt.characteristic_polynomial(jnp.asarray(M)))
+    np.testing.assert_allclose(g[:, 3, 1], (cp(A + h * E) - cp(A - h * E)) / (2 * h), atol=1e-7)
