@@ -169,7 +169,7 @@ except _NotFound:  # running from a source tree that was never installed
 
 #: Subpackages loaded on first use: the numerics never import xarray or matplotlib, and
 #: nothing imports Capytaine until a panel solve is asked for.
-_LAZY = ("io", "plotting", "bem", "cli")
+_LAZY = ("io", "plotting", "bem", "cli", "tow")
 
 
 def __getattr__(name):

@@ -69,6 +69,7 @@ __all__ = [
     "default_towline",
     "barge2_wind_table",
     "barge2_resistance",
+    "resistance_model",
     "sea_state",
     "illustrative_tug",
 ]
@@ -381,17 +382,14 @@ def barge2_resistance(
     forward-speed ``form`` of `jaxtow.drift.sailing_drift`; ``drift_source`` names it). The
     returned ``assumed`` lists every estimate the numbers depend on, and the drift source."""
     from .drift import barge2_waterline
-    from .resistance import RHO_AIR, ManoeuvringCoefficients, OCIMFLoad, TowResistance, WaveDrift
+    from .resistance import WaveDrift
 
     if version not in ("2a", "2b"):
         raise ValueError(f"parameter 'version' must be '2a' or '2b', got {version!r}")
     vessel = VESSELS[f"barge_{version}"](draft)
     T = ASSUMPTIONS["draft"]["value"] if draft is None else float(draft)
-    L, B = BARGE2_LENGTH, BARGE2_BREADTH
     H = ASSUMPTIONS["wind_height"]["value"] if wind_height is None else float(wind_height)
     table = barge2_wind_table() if wind_table is None else wind_table
-    hull = OCIMFLoad(ManoeuvringCoefficients(vessel, L, B), RHO_SEA, L, B, T)
-    wind = OCIMFLoad(table, RHO_AIR, L, B, H)
     waves = (
         WaveDrift(qtf=qtf, omega=omega, form=form)
         if qtf is not None
@@ -413,9 +411,40 @@ def barge2_resistance(
         )
     else:
         assumed.append(("wave_drift", f"{drift_source or 'user QTF'} ({form} sailing form)"))
-    return TowResistance(
-        hull=hull, wind=wind, waves=waves, name=f"barge_{version}", assumed=tuple(assumed)
+    return resistance_model(
+        vessel,
+        BARGE2_LENGTH,
+        BARGE2_BREADTH,
+        T,
+        waves,
+        wind_table=table,
+        wind_height=H,
+        name=f"barge_{version}",
+        assumed=tuple(assumed),
     )
+
+
+def resistance_model(
+    vessel: Vessel,
+    length: float,
+    breadth: float,
+    draft: float,
+    waves,
+    *,
+    wind_table: CoefficientTable,
+    wind_height: float,
+    name: str = "tow",
+    assumed: tuple = (),
+) -> TowResistance:
+    """The `jaxtow.resistance.TowResistance` of any vessel: the current/calm-water load from
+    its manoeuvring derivatives (fig. 7.1b) on L, B, T [m], the OCIMF wind load of
+    ``wind_table`` on the windage height [m], and ``waves`` (a `WaveDrift`)."""
+    from .resistance import RHO_AIR, ManoeuvringCoefficients, OCIMFLoad, TowResistance
+
+    L, B = float(length), float(breadth)
+    hull = OCIMFLoad(ManoeuvringCoefficients(vessel, L, B), RHO_SEA, L, B, float(draft))
+    wind = OCIMFLoad(wind_table, RHO_AIR, L, B, float(wind_height))
+    return TowResistance(hull=hull, wind=wind, waves=waves, name=name, assumed=tuple(assumed))
 
 
 def sea_state(name: str, **overrides) -> SeaState:

@@ -19,16 +19,19 @@ def test_help_lists_subcommands(capsys):
 
 @pytest.mark.parametrize("module", SUBCOMMANDS, ids=lambda m: m.__name__.rsplit(".", 1)[-1])
 def test_every_subcommand_has_help_with_an_output_option(module, capsys):
-    """Each of the subcommands parses, prints its help and takes an output or vessel option
+    """Each of the subcommands parses, prints its help and takes an output or tow option
     (the runs themselves are tested in the modules of their science: calm, equilibria, map,
-    simulate here; drift, bifurcation, bem, resistance and report with theirs)."""
+    simulate here; drift, bifurcation, bem, resistance and report with theirs; study and tow
+    in test_towfile)."""
     name = module.__name__.rsplit(".", 1)[-1]
-    argv = [name, "waves", "--help"] if name == "report" else [name, "--help"]
+    argv = {"report": [name, "waves", "--help"], "tow": [name, "show", "--help"]}.get(
+        name, [name, "--help"]
+    )
     with pytest.raises(SystemExit) as e:
         main(argv)
     assert e.value.code == 0
     out = capsys.readouterr().out
-    assert f"usage: jaxtow {name}" in out and ("--out" in out or "--vessel" in out)
+    assert f"usage: jaxtow {name}" in out and ("--out" in out or "tow" in out)
 
 
 @pytest.mark.slow
@@ -63,21 +66,21 @@ def test_calm_writes_figures_datasets_summary(tmp_path, capsys):
         ]
     )
     names = {p.name for p in out.iterdir()}
-    for v in ("barge_2a", "barge_2b"):
+    for v in ("barge2a", "barge2b"):
         for stem in ("equilibria_vs_xp", "max_real_vs_l0", "map_xp_l0"):
             assert f"{v}_{stem}.png" in names and f"{v}_{stem}.nc" in names
-    assert "barge_2a_time_traces.png" in names and "barge_2b_phase_portraits.png" in names
+    assert "barge2a_time_traces.png" in names and "barge2b_phase_portraits.png" in names
     summary = json.loads((out / "summary.json").read_text())
-    assert summary["barge_2b"]["time_domain"]["ended_early"] is False
-    assert summary["barge_2a"]["equilibria_stability"] == ["unstable"]
-    assert summary["barge_2b"]["equilibria_stability"] == ["unstable", "stable", "unstable"]
-    ds = load_dataset(out / "barge_2b_max_real_vs_l0.nc")
+    assert summary["barge2b"]["time_domain"]["ended_early"] is False
+    assert summary["barge2a"]["equilibria_stability"] == ["unstable"]
+    assert summary["barge2b"]["equilibria_stability"] == ["unstable", "stable", "unstable"]
+    ds = load_dataset(out / "barge2b_max_real_vs_l0.nc")
     assert ds.sizes["l0"] == 6
     assert "estimates" in capsys.readouterr().out
 
 
 def test_equilibria_subcommand(capsys):
-    main(["equilibria", "--vessel", "barge_2b", "--xp", "0.5", "--l0", "1.0", "--eigenvalues"])
+    main(["equilibria", "--tow", "barge2b", "--xp", "0.5", "--l0", "1.0", "--eigenvalues"])
     out = capsys.readouterr().out
     rows = [
         ln.split()
@@ -93,8 +96,8 @@ def test_map_subcommand_and_overrides(tmp_path, capsys):
     main(
         [
             "map",
-            "--vessel",
-            "barge_2a",
+            "--tow",
+            "barge2a",
             "--param",
             "l0",
             "0.2",
@@ -113,10 +116,22 @@ def test_map_subcommand_and_overrides(tmp_path, capsys):
             "--eigenvalues",
         ]
     )
-    ds = load_dataset(tmp_path / "barge_2a_l0_EA.nc")
+    ds = load_dataset(tmp_path / "barge2a_l0_EA.nc")
     assert ds.attrs["vessel_a22"] == 0.3
     assert ds["eig_real"].dims[-1] == "mode" and ds.attrs["eigenvalue_method"] == "lapack"
-    assert (tmp_path / "barge_2a_l0_EA_map.png").exists()
+    assert (tmp_path / "barge2a_l0_EA_map.png").exists()
+
+
+def test_old_vessel_flag_and_spelling_still_work_with_a_deprecation_message(capsys):
+    """One release of grace: --vessel barge_2b is --tow barge2b, with a message on stderr
+    naming the new spelling; the numbers are the same."""
+    main(["equilibria", "--vessel", "barge_2b", "--l0", "1.0"])
+    old = capsys.readouterr()
+    main(["equilibria", "--tow", "barge2b", "--l0", "1.0"])
+    new = capsys.readouterr()
+    assert old.out == new.out
+    assert "--vessel is deprecated" in old.err and "'barge2b'" in old.err
+    assert "deprecated" not in new.err
 
 
 @pytest.mark.parametrize(
@@ -141,8 +156,8 @@ def test_simulate_subcommand(tmp_path, capsys):
     main(
         [
             "simulate",
-            "--vessels",
-            "barge_2b",
+            "--tows",
+            "barge2b",
             "--t1",
             "40",
             "--n-save",
@@ -152,10 +167,10 @@ def test_simulate_subcommand(tmp_path, capsys):
         ]
     )
     for f in (
-        "barge_2b_time_traces.png",
-        "barge_2b_phase_portraits.png",
-        "barge_2b_forces.png",
+        "barge2b_time_traces.png",
+        "barge2b_phase_portraits.png",
+        "barge2b_forces.png",
         "simulate_summary.json",
     ):
         assert (tmp_path / f).exists()
-    assert "barge_2b" in capsys.readouterr().out
+    assert "barge2b" in capsys.readouterr().out

@@ -22,7 +22,7 @@ def _entries(folder: Path) -> set:
 
 def test_second_cli_run_hits_the_cache(tmp_path):
     folder = tmp_path / "xla"
-    args = ["equilibria", "--vessel", "barge_2b"]
+    args = ["equilibria", "--tow", "barge2b"]
     _cli(args, {cc.ENV: str(folder)})
     first = _entries(folder)
     assert len(first) > 20  # every kernel of the run is stored
@@ -39,7 +39,7 @@ def test_cache_switches(tmp_path, monkeypatch):
     assert not (tmp_path / "jaxtow").exists()
     # the command-line switch: no folder is made even with the environment unset
     _cli(
-        ["equilibria", "--vessel", "barge_2b", "--no-compile-cache"],
+        ["equilibria", "--tow", "barge2b", "--no-compile-cache"],
         {"XDG_CACHE_HOME": str(tmp_path)},
     )
     assert not (tmp_path / "jaxtow").exists()

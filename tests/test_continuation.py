@@ -173,8 +173,8 @@ def test_cli_bifurcation(tmp_path):
         main(
             [
                 "bifurcation",
-                "--vessel",
-                "barge_2b",
+                "--tow",
+                "barge2b",
                 "--range",
                 "0.2",
                 "0.45",
@@ -184,10 +184,10 @@ def test_cli_bifurcation(tmp_path):
         )
         == 0
     )
-    s = json.loads((tmp_path / "bifurcation_barge_2b_xp.json").read_text())
+    s = json.loads((tmp_path / "bifurcation_barge2b_xp.json").read_text())
     hopf = sorted(p["parameter"] for p in s["special_points"] if p["kind"] == "hopf")
     assert len(hopf) == 2 and hopf[0] == pytest.approx(0.2560, abs=1e-4)
-    assert (tmp_path / "bifurcation_barge_2b_xp.png").stat().st_size > 10_000
+    assert (tmp_path / "bifurcation_barge2b_xp.png").stat().st_size > 10_000
 
 
 def test_hurwitz_determinants_know_stability():

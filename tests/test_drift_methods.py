@@ -310,8 +310,8 @@ def test_cli_drift_writes_figures_datasets_and_summary(tmp_path):
         main(
             [
                 "drift",
-                "--vessel",
-                "barge2",
+                "--tow",
+                "barge2a",
                 "--out",
                 str(tmp_path),
                 "--n-omega",

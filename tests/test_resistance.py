@@ -208,7 +208,7 @@ def test_cli_table_and_config_errors(tmp_path, capsys):
 def test_cli_resistance_writes_outputs(tmp_path, capsys):
     from jaxtow.cli import main
 
-    main(["resistance", "barge2", "--out", str(tmp_path)])
+    main(["resistance", "barge2a", "--out", str(tmp_path)])
     out = capsys.readouterr().out
     assert "survival" in out and "ILLUSTRATIVE" in out
     ds = jt.io.load_dataset(tmp_path / "resistance_sailing.nc")

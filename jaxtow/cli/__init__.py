@@ -2,6 +2,10 @@
 
 Subcommands:
 
+* ``jaxtow study TOW --out DIR``: the whole assessment of one tow (a tow file or a built-in
+  tow: barge1, barge2a, barge2b) as NetCDF, JSON and one self-contained HTML report.
+* ``jaxtow tow show TOW`` / ``jaxtow tow new FILE``: a resolved tow file with every default
+  and estimate; a commented template.
 * ``jaxtow calm --out DIR``: the without-waves stability study of thesis section 6.1 for
   Barge 2a and 2b (equilibria vs x_p', max Re λ vs l0', a (x_p', l0') stability map, and
   time-domain runs from the thesis's initial condition, figs 6.5-6.7): PNG figures,
@@ -26,10 +30,34 @@ from __future__ import annotations
 import argparse
 import sys
 
-from . import bem, bifurcation, calm, drift, equilibria, map, report, resistance, simulate
+from . import (
+    bem,
+    bifurcation,
+    calm,
+    drift,
+    equilibria,
+    map,
+    report,
+    resistance,
+    simulate,
+    study,
+    tow,
+)
 
 #: One module per subcommand, each with ``add_parser(sub)``; the order of ``jaxtow --help``.
-SUBCOMMANDS = (calm, equilibria, simulate, map, drift, bifurcation, resistance, report, bem)
+SUBCOMMANDS = (
+    study,
+    tow,
+    calm,
+    equilibria,
+    simulate,
+    map,
+    drift,
+    bifurcation,
+    resistance,
+    report,
+    bem,
+)
 
 
 def build_parser() -> argparse.ArgumentParser:

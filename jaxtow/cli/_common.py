@@ -29,46 +29,103 @@ def _parse_sets(items):
     return out
 
 
-def _model(args, vessel_name=None, overrides=None):
+def _tow_names(args, command: str) -> list:
+    """The tow names or files of a subcommand (``--tow``/``--tows``; the old ``--vessel`` /
+    ``--vessels`` flags and spellings are accepted with a deprecation message)."""
+    import sys
+
+    old = getattr(args, "vessel_old", None) or getattr(args, "vessels_old", None)
+    if old:
+        flag = "--vessel" if getattr(args, "vessel_old", None) else "--vessels"
+        new = "--tow" if flag == "--vessel" else "--tows"
+        print(
+            f"jaxtow {command}: warning: {flag} is deprecated and will be removed; use {new}",
+            file=sys.stderr,
+        )
+    names = old or getattr(args, "tows", None) or getattr(args, "tow", None) or "barge2a"
+    return list(names) if isinstance(names, (list, tuple)) else [names]
+
+
+def _model(args, tow_name=None, overrides=None, command: str = ""):
+    """(model, tow name): the tow's calm-water model with the command line's overrides
+    (``--u-tug`` rescales EA' as `jaxtow.at_tug_speed`; ``--l0``, ``--xp``, ``--EA`` and
+    ``--set NAME=VALUE`` set parameters)."""
     import jaxtow as jt
 
-    vname = vessel_name or args.vessel
-    if vname not in jt.presets.VESSELS:
+    from .tow import load_tow
+
+    command = command or getattr(args, "command", "")
+    name = tow_name or _tow_names(args, command)[0]
+    tow = load_tow(name, command)
+    if tow.vessel is None or tow.towline is None:
         raise SystemExit(
-            f"error: unknown vessel {vname!r}; choose from {sorted(jt.presets.VESSELS)}"
+            f"jaxtow {command}: error: tow {tow.name!r} has no manoeuvring model "
+            "([vessel] derivatives or preset, and [towline])"
         )
-    vessel = jt.presets.VESSELS[vname]()
-    EA = args.EA if args.EA is not None else jt.presets.steel_wire_EA_nd(u_tug=args.u_tug)
     try:
-        model = jt.TowModel(vessel=vessel, towline=jt.Towline(l0=args.l0, xp=args.xp, EA=EA))
-        sets = dict(overrides or {})
+        model = tow.model()
+        if getattr(args, "u_tug", None) is not None:
+            model = jt.at_tug_speed(model, args.u_tug)
+        sets = {
+            k: getattr(args, k) for k in ("l0", "xp", "EA") if getattr(args, k, None) is not None
+        }
+        sets.update(overrides or {})
         from .._parameters import check_values
 
         for k, v in sets.items():
             check_values(model, k, v)
-        return jt.with_parameters(model, **sets) if sets else model
+        return (jt.with_parameters(model, **sets) if sets else model), tow.name
     except ValueError as e:
         raise SystemExit(f"error: {e}") from None
+
+
+def _tow_option(p, multiple: bool = False, default=("barge2a",)):
+    """``--tow TOW`` (or ``--tows TOW ...``) and the hidden deprecated ``--vessel(s)``."""
+    import argparse
+
+    if multiple:
+        p.add_argument(
+            "--tows",
+            nargs="+",
+            default=list(default),
+            help="tow files or built-in tows (barge2a, barge2b) (default: "
+            + " ".join(default)
+            + ")",
+        )
+        p.add_argument("--vessels", dest="vessels_old", nargs="+", help=argparse.SUPPRESS)
+    else:
+        p.add_argument(
+            "--tow",
+            default=default[0],
+            help=f"tow file or built-in tow (barge1, barge2a, barge2b) (default {default[0]})",
+        )
+        p.add_argument("--vessel", dest="vessel_old", help=argparse.SUPPRESS)
 
 
 def _common(p):
     p.add_argument(
         "--u-tug",
         type=float,
-        default=2.0,
-        help="tug speed U_tug [m/s]; sets EA' of the default steel towline (default 2.0)",
+        default=None,
+        help="tug speed U_tug [m/s]; rescales EA' (default: the tow file's speed)",
     )
     p.add_argument(
         "--EA",
         type=float,
         default=None,
-        help="towline stiffness EA' (non-dimensional); default: the documented steel wire",
+        help="towline stiffness EA' (non-dimensional); default: the tow file's",
     )
     p.add_argument(
-        "--l0", type=float, default=2.5, help="unstretched towline length l0' [L] (default 2.5)"
+        "--l0",
+        type=float,
+        default=None,
+        help="unstretched towline length l0' [L] (default: the tow file's)",
     )
     p.add_argument(
-        "--xp", type=float, default=0.5, help="attachment point x_p' ahead of CoG [L] (default 0.5)"
+        "--xp",
+        type=float,
+        default=None,
+        help="attachment point x_p' ahead of CoG [L] (default: the tow file's)",
     )
     p.add_argument(
         "--set",

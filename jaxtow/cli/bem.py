@@ -194,7 +194,8 @@ def add_parser(sub):
     )
     r.add_argument(
         "config",
-        help=f"TOML config, or a built-in one: {', '.join(BUILTIN)} (print with --show-config)",
+        help="TOML panel config, or a built-in tow's: barge1, barge2a, barge2b "
+        "(print with --show-config)",
     )
     r.add_argument("--out", default="bem_out", help="output folder (default bem_out)")
     r.add_argument("--panel-size", type=float, default=None, help="override [hull] panel_size [m]")
@@ -205,4 +206,21 @@ def add_parser(sub):
     )
     r.add_argument("--quiet", action="store_true", help="no progress bar")
     r.add_argument("--show-config", action="store_true", help="print the config and exit")
-    r.set_defaults(func=config_dispatch("bem", BUILTIN, lambda a: cmd_bem(a)))
+    r.set_defaults(func=_dispatch)
+
+
+#: The built-in tows' panel configs (one spelling of the built-ins everywhere).
+TOW_CONFIGS = {"barge1": "barge1", "barge2a": "barge2", "barge2b": "barge2"}
+
+
+def _dispatch(args):
+    import sys
+
+    if args.config == "barge2":
+        print(
+            "jaxtow bem: warning: the name 'barge2' is deprecated and will be removed; use "
+            "'barge2a' or 'barge2b' (the same hull)",
+            file=sys.stderr,
+        )
+    args.config = TOW_CONFIGS.get(args.config, args.config)
+    config_dispatch("bem", BUILTIN, cmd_bem)(args)

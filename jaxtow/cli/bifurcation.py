@@ -7,6 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._common import _model, _tow_option
+
 
 def cmd_bifurcation(args):
     import jaxtow as jt
@@ -17,12 +19,8 @@ def cmd_bifurcation(args):
 
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    if args.vessel not in jt.presets.VESSELS:
-        raise SystemExit(
-            f"error: unknown vessel {args.vessel!r}; choose from {sorted(jt.presets.VESSELS)}"
-        )
-    vessel = jt.presets.VESSELS[args.vessel]()
-    model = jt.TowModel(vessel=vessel, towline=jt.presets.default_towline(l0=args.l0, xp=args.xp))
+    model, tow_name = _model(args, command="bifurcation")
+    vessel = model.vessel
     lo, hi = args.range
     try:
         p0 = min(max(float(jt.get_parameter(model, args.param)), lo), hi)
@@ -64,7 +62,7 @@ def cmd_bifurcation(args):
         plot_branch(
             branch, orbits=orbits, title=f"{vessel.name}, l0'={args.l0}, xp'={args.xp} (fixed ones)"
         ),
-        out / f"bifurcation_{args.vessel}_{args.param}.png",
+        out / f"bifurcation_{tow_name}_{args.param}.png",
     )
     special = [
         dict(
@@ -89,10 +87,10 @@ def cmd_bifurcation(args):
         )
         for o in orbits
     ]
-    (out / f"bifurcation_{args.vessel}_{args.param}.json").write_text(
+    (out / f"bifurcation_{tow_name}_{args.param}.json").write_text(
         json.dumps(
             dict(
-                vessel=args.vessel,
+                tow=tow_name,
                 parameter=args.param,
                 range=[lo, hi],
                 special_points=special,
@@ -125,7 +123,7 @@ def add_parser(sub):
     b = sub.add_parser(
         "bifurcation", help="equilibrium branches, pitchfork/fold/Hopf points, limit cycles"
     )
-    b.add_argument("--vessel", default="barge_2a", help="vessel preset (barge_2a, barge_2b)")
+    _tow_option(b)
     b.add_argument(
         "--param", default="xp", help="continuation parameter (xp, l0, EA, any vessel coefficient)"
     )

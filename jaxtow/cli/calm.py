@@ -7,7 +7,16 @@ from pathlib import Path
 
 import numpy as np
 
-from ._common import _common, _grid, _model, _parse_sets, _time_domain, _time_domain_options
+from ._common import (
+    _common,
+    _grid,
+    _model,
+    _parse_sets,
+    _time_domain,
+    _time_domain_options,
+    _tow_names,
+    _tow_option,
+)
 
 
 def cmd_calm(args):
@@ -21,8 +30,8 @@ def cmd_calm(args):
     sets = _parse_sets(args.set)
     summary = {}
     opts = dict(method="numerical", progress=not args.quiet, chunk_size=args.chunk_size)
-    for vname in args.vessels:
-        model = _model(args, vname, sets)
+    for name in _tow_names(args, "calm"):
+        model, vname = _model(args, name, sets, "calm")
         c = float(model.vessel.stability_coefficient())
         ds_xp = jt.sweep(model, {"xp": _grid(args.xp_grid, "xp-grid")}, **opts)
         ds_l0 = jt.sweep(model, {"l0": _grid(args.l0_grid, "l0-grid")}, **opts)
@@ -37,13 +46,17 @@ def cmd_calm(args):
             save_dataset(ds, out / f"{vname}_{tag}.nc")
         save(
             plot_equilibria_vs(
-                ds_xp, "xp", title=f"{model.vessel.name}: equilibria (fig. 6.3), l0'={args.l0}"
+                ds_xp,
+                "xp",
+                title=f"{model.vessel.name}: equilibria (fig. 6.3), l0'={float(model.towline.l0):g}",
             ),
             out / f"{vname}_equilibria_vs_xp.png",
         )
         save(
             plot_max_real_vs(
-                ds_l0, "l0", title=f"{model.vessel.name}: max Re(lambda), xp'={args.xp} (fig. 6.4)"
+                ds_l0,
+                "l0",
+                title=f"{model.vessel.name}: max Re(lambda), xp'={float(model.towline.xp):g} (fig. 6.4)",
             ),
             out / f"{vname}_max_real_vs_l0.png",
         )
@@ -57,8 +70,8 @@ def cmd_calm(args):
         summary[vname] = dict(
             stability_coefficient_c=c,
             course_stable=c > 0,
-            xp=args.xp,
-            l0=args.l0,
+            xp=float(model.towline.xp),
+            l0=float(model.towline.l0),
             EA=float(model.towline.EA),  # pyright: ignore[reportAttributeAccessIssue]
             equilibria_psi_deg=[float(np.degrees(p)) for p in eqs.psi],
             equilibria_max_real=[float(v) for v in st.max_real],
@@ -86,7 +99,7 @@ def cmd_calm(args):
 def add_parser(sub):
     c = sub.add_parser("calm", help="reproduce the without-waves stability study (thesis 6.1)")
     c.add_argument("--out", default="results", help="output folder (default: results)")
-    c.add_argument("--vessels", nargs="+", default=["barge_2a", "barge_2b"], help="vessel presets")
+    _tow_option(c, multiple=True, default=("barge2a", "barge2b"))
     c.add_argument(
         "--xp-grid",
         nargs=3,
@@ -112,4 +125,4 @@ def add_parser(sub):
     )
     _time_domain_options(c)
     _common(c)
-    c.set_defaults(func=cmd_calm, vessel=None)
+    c.set_defaults(func=cmd_calm)

@@ -8,17 +8,33 @@ from pathlib import Path
 
 import numpy as np
 
+from ._common import _tow_option
+
 SWAY_METHODS = ("faltinsen", "liu", "fujii_takahashi", "kuroda", "kashiwagi")
 
 
 def _waterline(args):
+    """The waterline of ``--waterline FILE`` or of the tow (``--tow``; ``--draft`` overrides
+    its draft)."""
     import jaxtow as jt
+
+    from ._common import _tow_names
+    from .tow import load_tow
 
     if args.waterline:
         return jt.drift.read_waterline(args.waterline, draft=args.draft or 5.0)
-    if args.vessel == "barge1":
-        return jt.drift.box_waterline(draft=args.draft)
-    return jt.drift.barge2_waterline(draft=args.draft)
+    name = _tow_names(args, "drift")[0]
+    tow = load_tow(name, "drift")
+    if args.draft is None:
+        return tow.waterline
+    spec = tow.resolved["hull"]["waterline"]
+    if spec == "box":
+        return jt.drift.box_waterline(
+            tow.scales.length, tow.resolved["vessel"]["breadth"], args.draft
+        )
+    if spec == "barge2":
+        return jt.drift.barge2_waterline(draft=args.draft)
+    return jt.drift.read_waterline(spec, draft=args.draft)
 
 
 def _zone_mse(ds, component, base):
@@ -194,12 +210,7 @@ def cmd_drift(args):
 
 def add_parser(sub):
     d = sub.add_parser("drift", help="compare the waterline drift methods (thesis chapters 4-5)")
-    d.add_argument(
-        "--vessel",
-        choices=("barge1", "barge2"),
-        default="barge1",
-        help="built-in waterline: barge1 (box) or barge2 (raked ends)",
-    )
+    _tow_option(d, default=("barge1",))
     d.add_argument(
         "--waterline", help="half-waterline text file instead (see jaxtow.drift.read_waterline)"
     )

@@ -6,13 +6,13 @@ import math
 
 import numpy as np
 
-from ._common import _common, _model, _parse_sets
+from ._common import _common, _model, _parse_sets, _tow_option
 
 
 def cmd_equilibria(args):
     import jaxtow as jt
 
-    model = _model(args, overrides=_parse_sets(args.set))
+    model, _ = _model(args, overrides=_parse_sets(args.set))
     eqs = jt.equilibria(model)
     st = jt.stability(model, eqs.state)
     print(
@@ -37,7 +37,7 @@ def cmd_equilibria(args):
 
 def add_parser(sub):
     e = sub.add_parser("equilibria", help="equilibria of one configuration and their stability")
-    e.add_argument("--vessel", default="barge_2a", help="vessel preset (barge_2a, barge_2b)")
+    _tow_option(e)
     e.add_argument("--eigenvalues", action="store_true", help="print all eigenvalues")
     _common(e)
     e.set_defaults(func=cmd_equilibria)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ._common import _common, _grid, _model, _parse_sets
+from ._common import _common, _grid, _model, _parse_sets, _tow_option
 
 
 def cmd_map(args):
@@ -15,7 +15,7 @@ def cmd_map(args):
 
     if not args.param:
         raise SystemExit("error: give at least one --param NAME LO HI N")
-    model = _model(args, overrides=_parse_sets(args.set))
+    model, tow_name = _model(args, overrides=_parse_sets(args.set))
     grid = {}
     for name, lo, hi, n in args.param:
         grid[name] = _grid((lo, hi, n), f"param {name}")
@@ -33,7 +33,7 @@ def cmd_map(args):
         raise SystemExit(f"error: {e}") from None
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    stem = args.vessel + "_" + "_".join(grid)
+    stem = tow_name + "_" + "_".join(grid)
     save_dataset(ds, out / f"{stem}.nc")
     names = list(grid)
     if len(names) == 1:
@@ -47,7 +47,7 @@ def cmd_map(args):
 
 def add_parser(sub):
     m = sub.add_parser("map", help="sweep any parameters; NetCDF + figure")
-    m.add_argument("--vessel", default="barge_2a", help="vessel preset (barge_2a, barge_2b)")
+    _tow_option(m)
     m.add_argument(
         "--param",
         nargs=4,

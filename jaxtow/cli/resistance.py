@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..reports._resistance import eqx_tp as eqx_tp, evaluate as evaluate
 from ._config import config_dispatch, read_config as _read_config
 
 NM = 1852.0  # m
@@ -125,60 +126,6 @@ def build(cfg: dict):
     return tow, tug, seas, math.radians(tow_c.get("heading_deg", 0.0)), length
 
 
-def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
-    """Everything the table prints for one sea state (SI)."""
-    import jax
-    import jax.numpy as jnp
-
-    from .. import resistance as R
-    from ..waves import physical_tp_range
-
-    req = R.required_pull(tow, sea, heading=heading, tug=tug)
-    out = dict(
-        sea_state=sea.name,
-        hs=float(sea.hs),
-        tp=float(sea.tp),
-        wind_speed=float(sea.wind_speed),
-        current_speed=float(sea.current_speed),
-        hold_resistance=dict(zip(R.COMPONENTS, map(float, req.budget.resistance))),
-        hold_towing_force=float(req.towing_force),
-        required_bollard_pull=float(req.bollard_pull),
-    )
-    if float(sea.hs) > 0:
-        lo, hi = (float(t) for t in physical_tp_range(float(sea.hs)))
-        tps = jnp.linspace(lo, hi, n_tp)
-        bp = jax.vmap(
-            lambda t: R.required_pull(tow, eqx_tp(sea, t), heading=heading, tug=tug).bollard_pull
-        )(tps)
-        k = int(jnp.argmax(bp))
-        out.update(
-            physical_tp_range=[lo, hi],
-            worst_tp=float(tps[k]),
-            worst_required_bollard_pull=float(bp[k]),
-        )
-    p = R.operating_speed(tow, tug, sea, heading=heading, throw=False)
-    msg = R.status_message(p, tug, tow)
-    names = ("successful", "cannot_hold", "no_crossing", "froude_too_high")
-    status = next(n for n in names if bool(p.result == getattr(R.RESULTS, n)))
-    out.update(status=status, message=msg)
-    if status in ("successful", "froude_too_high"):
-        out.update(
-            operating_speed=float(p.speed),
-            froude=float(p.froude),
-            pull=float(p.pull),
-            operating_resistance=dict(zip(R.COMPONENTS, map(float, p.budget.resistance))),
-        )
-        if route_length:
-            out["transit_time_h"] = float(p.transit_time(route_length)) / 3600.0
-    return out
-
-
-def eqx_tp(sea, tp):
-    import equinox as eqx
-
-    return eqx.tree_at(lambda s: s.tp, sea, tp)
-
-
 def format_table(rows: list, tug, route_length) -> str:
     """The readable table of `jaxtow resistance`."""
     head = (
@@ -247,6 +194,47 @@ def format_table(rows: list, tug, route_length) -> str:
     return "\n".join(lines)
 
 
+def inputs(spec):
+    """(tow, tug, sea states, heading, route) from a tow file or built-in tow (barge2a,
+    barge2b), or from an old resistance config (the built-in ``barge2`` or a file with
+    [tow] vessel = ...), which is deprecated."""
+    import sys
+
+    from ..tow import BUILTIN_TOWS, canonical_name
+    from .tow import load_tow
+
+    spec = str(spec)
+    old = spec in BUILTIN
+    if not old and canonical_name(spec)[0] not in BUILTIN_TOWS:
+        try:
+            import tomllib
+
+            cfg = tomllib.loads(Path(spec).read_text()) if Path(spec).is_file() else {}
+        except (tomllib.TOMLDecodeError, OSError):
+            cfg = {}
+        old = "vessel" not in cfg and "vessel" in cfg.get("tow", {})
+    if old:
+        print(
+            "jaxtow resistance: warning: resistance configs are deprecated and will be "
+            "removed; use a tow file (jaxtow tow new) or a built-in tow (barge2a)"
+            + (" — the built-in 'barge2' is now 'barge2a'" if spec in BUILTIN else ""),
+            file=sys.stderr,
+        )
+        try:
+            return build(read_config(spec))
+        except (ValueError, KeyError, OSError) as e:
+            raise SystemExit(f"jaxtow resistance: {e}") from None
+    tow = load_tow(spec, "resistance")
+    if tow.tug is None or tow.vessel is None:
+        raise SystemExit(
+            f"jaxtow resistance: error: tow {tow.name!r} needs a manoeuvring model ([vessel]) "
+            "and a [tug]"
+        )
+    if not tow.sea_states:
+        raise SystemExit(f"jaxtow resistance: error: tow {tow.name!r} has no [[sea_state]]")
+    return tow.resistance(), tow.tug, list(tow.sea_states), 0.0, tow.route_length
+
+
 def cmd_resistance(args):
     import jax.numpy as jnp
 
@@ -256,10 +244,7 @@ def cmd_resistance(args):
     from ..plotting.resistance import plot_budget_vs_speed, plot_budget_vs_tp, plot_operating_point
     from ..waves import physical_tp_range
 
-    try:
-        tow, tug, seas, heading, route = build(read_config(args.config))
-    except (ValueError, KeyError, OSError) as e:
-        raise SystemExit(f"jaxtow resistance: {e}") from None
+    tow, tug, seas, heading, route = inputs(args.config)
     rows = [evaluate(tow, tug, s, heading, route) for s in seas]
     print(format_table(rows, tug, route))
     notes = [f"  - {k}: {n}" for k, n in tow.assumed]
@@ -336,8 +321,8 @@ def add_parser(sub):
     )
     r.add_argument(
         "config",
-        help=f"TOML config file, or a built-in one: {', '.join(BUILTIN)} "
-        "(print it with --show-config)",
+        help="tow file or built-in tow (barge2a, barge2b); an old resistance config "
+        f"(built-in: {', '.join(BUILTIN)}) is still read, deprecated",
     )
     r.add_argument(
         "--out", default=None, help="also write datasets, figures and summary.json to this folder"
@@ -347,4 +332,15 @@ def add_parser(sub):
         action="store_true",
         help="print the config (e.g. the built-in one) and exit",
     )
-    r.set_defaults(func=config_dispatch("resistance", BUILTIN, lambda a: cmd_resistance(a)))
+    r.set_defaults(func=_dispatch)
+
+
+def _dispatch(args):
+    from ..tow import BUILTIN_TOWS, canonical_name
+
+    if args.show_config and canonical_name(str(args.config))[0] in BUILTIN_TOWS:
+        from .tow import load_tow
+
+        print(load_tow(args.config, "resistance").show())
+        return
+    config_dispatch("resistance", BUILTIN, cmd_resistance)(args)

@@ -5,15 +5,23 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from ._common import _common, _model, _parse_sets, _time_domain, _time_domain_options
+from ._common import (
+    _common,
+    _model,
+    _parse_sets,
+    _time_domain,
+    _time_domain_options,
+    _tow_names,
+    _tow_option,
+)
 
 
 def cmd_simulate(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     summary = {}
-    for vname in args.vessels:
-        model = _model(args, vname, _parse_sets(args.set))
+    for name in _tow_names(args, "simulate"):
+        model, vname = _model(args, name, _parse_sets(args.set), "simulate")
         summary[vname] = _time_domain(model, vname, args, out) | dict(
             assumed_values=dict(model.assumed)
         )
@@ -23,8 +31,8 @@ def cmd_simulate(args):
 
 def add_parser(sub):
     s = sub.add_parser("simulate", help="time-domain run(s) from the thesis's initial condition")
-    s.add_argument("--vessels", nargs="+", default=["barge_2a", "barge_2b"], help="vessel presets")
+    _tow_option(s, multiple=True, default=("barge2a", "barge2b"))
     _time_domain_options(s)
     s.add_argument("--out", default="results", help="output folder")
     _common(s)
-    s.set_defaults(func=cmd_simulate, vessel=None)
+    s.set_defaults(func=cmd_simulate)

@@ -75,3 +75,17 @@ __all__ = [
     "time_domain_agrees_with_linear",
     "waves_reduce_path_width",
 ]
+
+from ._resistance import evaluate as evaluate_resistance  # noqa: E402
+from ._tow import (  # noqa: E402
+    VERDICTS as VERDICTS,
+    TowStudy as TowStudy,
+    tow_study as tow_study,
+    verdict as verdict,
+)
+
+__all__ += ["evaluate_resistance", "VERDICTS", "TowStudy", "tow_study", "verdict"]
+
+from ._html import SECTIONS as REPORT_SECTIONS, tow_report_html as tow_report_html  # noqa: E402
+
+__all__ += ["REPORT_SECTIONS", "tow_report_html"]

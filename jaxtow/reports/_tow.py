@@ -1,0 +1,326 @@
+"""The whole assessment of one tow (``jaxtow study``): resistance budget, required bollard
+pull, operating speed and transit time per sea state; equilibria and stability in calm water
+and in each sea state with a verdict; a stability map around the design point; the
+time-domain check from a disturbed start; the wave drift of the hull; and the validity
+flags and estimates every number depends on. Numbers only: `jaxtow.reports.tow_report_html`
+and the command line turn them into files."""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = ["Steps", "TowStudy", "tow_study", "verdict", "VERDICTS", "VALIDITY_WORDS"]
+
+#: Plain-words verdicts of a set of equilibria (`verdict`).
+VERDICTS = {
+    "follows": "follows the tug: the straight-behind equilibrium is stable",
+    "sheers": "sheers to one side: only off-axis equilibria are stable",
+    "fishtails": "fishtails: no equilibrium is stable (a limit cycle or divergence)",
+    "marginal": "marginal: the best equilibrium is at the stability boundary (|max Re λ| "
+    "within the stability tolerance)",
+    "invalid": "no equilibrium found (the towline is slack at every heading)",
+}
+#: The validity flags in plain words (the report's warnings).
+VALIDITY_WORDS = {
+    "line_taut": "the towline goes slack",
+    "froude_ok": "the Froude number is 0.15 or more (the drift theory is for slow ships)",
+    "no_separation": "the tow speed exceeds the waves' orbital velocity (U >= omega_p Hs/2): "
+    "the forward-speed drift theory assumes the flow does not separate",
+    "tau_ok": "tau = omega U / g exceeds 1/4 (Aranha's forward-speed correction is a "
+    "small-tau theory)",
+    "encounter_positive": "the tow overtakes some of the waves (encounter frequency <= 0)",
+    "heading_in_table": "the relative wave heading is outside the drift table",
+    "yaw_rate_damping": "the drift table has no sectional moments (no yaw-rate damping)",
+}
+#: An equilibrium within this heading of ψ = 0 counts as straight behind [deg].
+STRAIGHT_DEG = 1.0
+
+
+class Steps:
+    """Progress of the study's steps on stderr: ``[k/n] label ... done in t s``."""
+
+    def __init__(self, total: int, enabled: bool = True, stream=None):
+        self.total, self.enabled, self.k = total, enabled, 0
+        self.stream = stream or sys.stderr
+        self.times: dict = {}
+
+    def run(self, label: str, fn, *args, **kw):
+        self.k += 1
+        t0 = time.perf_counter()
+        if self.enabled:
+            self.stream.write(f"[{self.k}/{self.total}] {label} ...\n")
+            self.stream.flush()
+        out = fn(*args, **kw)
+        dt = time.perf_counter() - t0
+        self.times[label] = dt
+        if self.enabled:
+            self.stream.write(f"[{self.k}/{self.total}] {label}: done in {dt:.1f} s\n")
+            self.stream.flush()
+        return out
+
+
+def verdict(psi, max_real, valid, stab_codes) -> str:
+    """The key of `VERDICTS` for equilibria at headings ``psi`` [rad] with ``max_real``,
+    found by the solver where ``valid``, and `jaxtow.classify` codes ``stab_codes`` (−1
+    stable, 0 marginal, 1 unstable)."""
+    from .._stability import MARGINAL, STABLE
+
+    psi, ok, codes = np.asarray(psi), np.asarray(valid, bool), np.asarray(stab_codes)
+    stable = ok & (codes == STABLE)
+    if not ok.any():
+        return "invalid"
+    straight = np.abs(np.degrees(psi)) < STRAIGHT_DEG
+    if (stable & straight).any():
+        return "follows"
+    if stable.any():
+        return "sheers"
+    if (ok & (codes == MARGINAL)).any():
+        return "marginal"
+    return "fishtails"
+
+
+@dataclass
+class TowStudy:
+    """What `tow_study` computed: ``summary`` (JSON-ready numbers, verdicts, estimates,
+    validity), ``datasets`` (name → xarray.Dataset), and the raw pieces the figures need
+    (``runs``: name → (traj, metrics); ``budgets``: sea state → speeds and loads)."""
+
+    tow: object
+    summary: dict = field(default_factory=dict)
+    datasets: dict = field(default_factory=dict)
+    runs: dict = field(default_factory=dict)
+    budgets: dict = field(default_factory=dict)
+    drift_curves: dict = field(default_factory=dict)
+
+
+def _equilibria_record(model, progress_label=""):
+    import jax.numpy as jnp
+
+    from .._dynamics import all_valid, validity
+    from .._equilibrium import equilibria
+    from .._stability import STABILITY_LABELS, stability
+
+    eqs = equilibria(model)
+    st = stability(model, eqs.state)
+    found = np.asarray(eqs.valid)
+    rows, flags_all = [], {}
+    for i in range(len(eqs)):
+        flags = validity(model, eqs.state[i])
+        bools = {k: bool(v) for k, v in flags.items() if jnp.asarray(v).dtype == bool}
+        ok = bool(eqs.valid[i]) and bool(all_valid(flags))
+        rows.append(
+            dict(
+                psi_deg=float(np.degrees(eqs.psi[i])),
+                gamma_deg=float(np.degrees(eqs.gamma[i])),
+                tension=float(eqs.tension[i]),
+                max_real=float(st.max_real[i]),
+                stability=STABILITY_LABELS[int(st.stability[i])],
+                valid=ok,
+                failed_flags=[k for k, v in bools.items() if not v],
+            )
+        )
+        for k, v in bools.items():
+            flags_all[k] = flags_all.get(k, True) and v
+    key = verdict(eqs.psi, st.max_real, found, np.asarray(st.stability))
+    text = VERDICTS[key]
+    outside = sorted(k for k, v in flags_all.items() if not v)
+    if outside and key != "invalid":
+        text += "; OUTSIDE the model's validity: " + "; ".join(
+            VALIDITY_WORDS.get(k, k) for k in outside
+        )
+    return dict(
+        equilibria=rows,
+        verdict=key,
+        verdict_text=text,
+        validity=flags_all,
+        outside_validity=outside,
+    )
+
+
+def _grid(spec):
+    lo, hi, n = spec
+    return np.linspace(lo, hi, int(n))
+
+
+def tow_study(
+    tow,
+    *,
+    progress: bool = True,
+    map_xp=None,
+    map_l0=None,
+    time_domain: bool | None = None,
+    t1: float | None = None,
+    n_save: int = 2001,
+    speeds=None,
+) -> TowStudy:
+    """Run the whole assessment of ``tow`` (a `jaxtow.tow.Tow`). The grids, the run length
+    and the speeds default to the tow file's ``[study]``; the keywords override them (the
+    tests use small grids). Steps the tow cannot take (no manoeuvring model, no tug, no
+    sea state) are listed in ``summary['skipped']`` with the reason."""
+    import jax.numpy as jnp
+
+    from .. import resistance as R
+    from .._metrics import fishtail_metrics, trajectory
+    from .._simulate import initial_state, simulate
+    from .._sweep import sweep
+    from ..drift import irregular_sailing_drift
+    from ..waves import DEFAULT_OMEGA, Jonswap
+    from ._resistance import evaluate
+
+    opts = dict(tow.study)
+    map_xp = _grid(opts["map_xp"] if map_xp is None else map_xp)
+    map_l0 = _grid(opts["map_l0"] if map_l0 is None else map_l0)
+    do_td = opts["time_domain"] if time_domain is None else time_domain
+    t1 = opts["t1"] if t1 is None else t1
+    speeds = _grid(opts["speeds"] if speeds is None else speeds)
+    has_model = tow.vessel is not None and tow.towline is not None
+    seas = [s for s in tow.sea_states]
+    res = TowStudy(tow)
+    skipped = {}
+    n_steps = 1 + (
+        has_model * (2 + bool(tow.tug) + (len(seas) if opts["sea_states"] else 0) + bool(do_td))
+    )
+    steps = Steps(n_steps, enabled=progress)
+    q, desc = steps.run("wave drift of the hull", tow.drift)
+    sc = tow.scales
+    summary = dict(
+        tow=tow.name,
+        description=tow.resolved["tow"].get("description", ""),
+        source=tow.source,
+        design_speed=float(sc.u_tug),
+        length=sc.length,
+        breadth=float(tow.resolved["vessel"]["breadth"]),
+        draft=sc.draft,
+        drift_source=desc,
+        sailing_form=tow.form,
+        assumed=[list(a) for a in tow.assumed],
+        warnings=list(tow.warnings),
+    )
+    # head-sea drift of the hull and the mean drift in each sea state (no model needed)
+    w = np.asarray(q.omega)
+    import jax
+
+    fx = np.asarray(jax.vmap(lambda x: q.moments(x, 0.0))(jnp.asarray(w))[:, 0])
+    res.drift_curves["head_sea_fx"] = (w, fx)
+    drift_rows = []
+    for s in seas:
+        if float(s.hs) <= 0:
+            continue
+        S = Jonswap(hs=s.hs, tp=s.tp, gamma=s.gamma)(DEFAULT_OMEGA)
+        row = dict(sea_state=s.name, hs=float(s.hs), tp=float(s.tp))
+        for tag, u in (("stationary", 0.0), ("design_speed", float(sc.u_tug))):
+            F = irregular_sailing_drift(q, DEFAULT_OMEGA, S, 0.0, u, 0.0, form=tow.form)
+            row[f"fx_{tag}"] = float(F[0])
+        drift_rows.append(row)
+    summary["mean_drift"] = drift_rows
+    if not has_model:
+        skipped["stability, resistance and time domain"] = (
+            "the tow file has no manoeuvring model ([vessel] derivatives or preset, and [towline])"
+        )
+        summary["skipped"] = skipped
+        res.summary = summary
+        return res
+    model = tow.model()
+    line = model.towline
+    summary["stability_coefficient_c"] = float(model.vessel.stability_coefficient())
+    summary["towline"] = dict(
+        l0=float(line.l0),
+        xp=float(line.xp),
+        yp=float(line.yp),  # pyright: ignore[reportAttributeAccessIssue]
+        EA_nd=float(line.EA),  # pyright: ignore[reportAttributeAccessIssue]
+        length_m=float(line.l0) * sc.length,
+    )
+
+    # ---------------------------------------------------------------- resistance
+    if tow.tug is not None:
+        tr = tow.resistance()
+
+        def budget():
+            rows = [evaluate(tr, tow.tug, s, 0.0, tow.route_length) for s in seas]
+            for s in seas:
+                b = R.resistance_grid(tr, s, jnp.asarray(speeds), jnp.array([float(s.tp)]))
+                res.budgets[s.name] = dict(
+                    speeds=speeds,
+                    components=np.asarray(b.resistance[:, 0]),
+                    total=np.asarray(b.total[:, 0]),
+                    pull=np.asarray(tow.tug.pull(jnp.asarray(speeds))),
+                )
+            return rows
+
+        summary["resistance"] = steps.run("resistance, bollard pull and operating speed", budget)
+        summary["components"] = list(R.COMPONENTS)
+        summary["tug"] = dict(
+            bollard_pull=float(tow.tug.bollard_pull),
+            free_speed=float(tow.tug.max_speed),
+            efficiency=float(tow.tug.efficiency),
+        )
+        summary["route_length_m"] = tow.route_length
+    else:
+        skipped["resistance"] = "the tow file has no [tug]"
+
+    # ---------------------------------------------------------------- stability
+    summary["calm"] = steps.run("equilibria and stability in calm water", _equilibria_record, model)
+    if opts["sea_states"]:
+        summary["sea_states"] = {}
+        for s in seas:
+            rec = steps.run(
+                f"equilibria and stability in sea state {s.name!r}",
+                _equilibria_record,
+                tow.sea_model(s),
+            )
+            notes = []
+            if any(float(a) != 0.0 for a in (s.wave_angle, s.wind_angle)):
+                notes.append(
+                    "waves and wind taken from ahead of the course in the stability model; "
+                    "their directions enter the resistance budget only"
+                )
+            rec.update(hs=float(s.hs), tp=float(s.tp), wind_speed=float(s.wind_speed), notes=notes)
+            summary["sea_states"][s.name] = rec
+
+    def stability_map():
+        return sweep(model, {"xp": map_xp, "l0": map_l0}, progress=progress)
+
+    ds = steps.run("stability map around the design point (x_p', l0')", stability_map)
+    res.datasets["map_xp_l0"] = ds
+    straight = ds["max_real"].where(ds["valid"] & (ds["branch"] == 0)).max("equilibrium")
+    stable = (straight < 0).values
+    summary["map"] = dict(
+        xp=[float(map_xp[0]), float(map_xp[-1]), int(map_xp.size)],
+        l0=[float(map_l0[0]), float(map_l0[-1]), int(map_l0.size)],
+        straight_stable_share=float(np.mean(stable)),
+    )
+
+    # ---------------------------------------------------------------- time domain
+    if do_td:
+
+        def run():
+            y0 = initial_state(model, psi0=math.radians(opts["psi0_deg"]), y0=opts["y0"])
+            sim = simulate(model, y0, t1=t1, n_save=n_save)
+            met = fishtail_metrics(model, sim)
+            flags = {k: bool(np.all(np.asarray(v))) for k, v in sim.validity.items()}
+            return trajectory(model, sim), met, flags
+
+        traj, met, flags = steps.run("time-domain check from a disturbed start", run)
+        res.runs["calm"] = (traj, met)
+        summary["time_domain"] = dict(
+            psi0_deg=opts["psi0_deg"],
+            y0=opts["y0"],
+            t1=t1,
+            outcome=met["outcome"],
+            path_width=met["path_width"],
+            yaw_range=met["yaw_range"],
+            slewing_period=met["slewing_period"],
+            ended_early=bool(met["ended_early"]),
+            validity=flags,
+        )
+    else:
+        skipped["time domain"] = "switched off in [study]"
+    summary["skipped"] = skipped
+    summary["step_times_s"] = steps.times
+    res.summary = summary
+    return res

@@ -1,0 +1,344 @@
+"""The tow file's schema: every section and key with its type, units, rule and default, the
+errors that name the key and its line, and a small TOML writer for the resolved file.
+
+The schema is data (`SCHEMA`): the reader, the template and the documentation
+(docs/towfile.md) all follow it, so a key is declared in one place.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+__all__ = ["TowFileError", "TowFileWarning", "Key", "SCHEMA", "ARRAYS", "locate", "to_toml"]
+
+
+class TowFileError(ValueError):
+    """A tow file that cannot be used: the message names the file, the line and the key."""
+
+    def __init__(self, message: str, *, source: str = "", line: int | None = None, key: str = ""):
+        self.source, self.line, self.key = source, line, key
+        where = f"tow file {source}" if source else "tow file"
+        if line is not None:
+            where += f", line {line}"
+        if key:
+            where += f", key {key}"
+        super().__init__(f"{where}: {message}")
+
+
+class TowFileWarning(UserWarning):
+    """A tow-file value that is usable but outside what the physics or the data cover."""
+
+
+@dataclass(frozen=True)
+class Key:
+    """One key of a section: ``kind`` float | int | str | bool | floats (a list of numbers) |
+    grid ([lo, hi, n]) | table (an inline table or a string); ``rule`` positive |
+    nonnegative | finite | unit (0 < x ≤ 1) | None; ``units`` and ``doc`` for the template and
+    the docs; ``default`` (None: no default)."""
+
+    kind: str
+    doc: str
+    units: str = "-"
+    rule: str | None = None
+    default: object = None
+
+
+def _keys(**kw) -> dict:
+    return kw
+
+
+#: The sections and their keys. ``sea_state`` is an array of tables ([[sea_state]]).
+SCHEMA: dict[str, dict[str, Key]] = {
+    "tow": _keys(
+        name=Key("str", "a short name for outputs and the report"),
+        description=Key("str", "one line on the tow for the report", default=""),
+        speed=Key(
+            "float",
+            "design tow speed U_tug: the scale of the non-dimensional model",
+            "m/s",
+            "positive",
+            2.0,
+        ),
+    ),
+    "vessel": _keys(
+        preset=Key("str", "a built-in manoeuvring model: barge_2a | barge_2b"),
+        length=Key("float", "length L (the model's length scale)", "m", "positive"),
+        breadth=Key("float", "breadth B", "m", "positive"),
+        draft=Key("float", "draft T (default for a preset: the documented 5.0 m)", "m", "positive"),
+        derivatives=Key(
+            "table",
+            "non-dimensional mass and manoeuvring derivatives (Hong et al. convention, "
+            "thesis Table 3.7): m, Izz, R0, Xvv, Xrr, Yv, Yr, Yvvv, Yrrr, Nv, Nr, Nvvv; "
+            "optional a11, a22, a66 (default: 5 % of m' and Clarke et al. 1983)",
+        ),
+    ),
+    "hull": _keys(
+        waterline=Key(
+            "str",
+            "waterline for the waterline drift methods: box (L x B rectangle) | barge2 "
+            "(the raked Barge 2) | a half-waterline file (jaxtow.drift.read_waterline)",
+        ),
+        drift=Key(
+            "table",
+            "wave-drift source: a shipped panel database (barge1:far_field, "
+            "barge2:near_field, ...), standin, a waterline method (kashiwagi, faltinsen, "
+            "...) on the waterline, or a drift file as a path or {file = PATH, ulen = ..., "
+            "rho = ..., g = ..., reference_point = ..., symmetry = ..., moment_set = ...}",
+        ),
+        sailing_form=Key(
+            "str", "forward-speed form of the drift: aranha | linear | thesis", default="aranha"
+        ),
+        wind_table=Key(
+            "str",
+            "wind coefficients: 'illustrative' (the ILLUSTRATIVE Barge 2 table) or a CSV "
+            "file with columns angle_deg, cx, cy, cn from 0 to 180 deg",
+            default="illustrative",
+        ),
+        wind_height=Key("float", "windage height above the waterline", "m", "positive"),
+    ),
+    "towline": _keys(
+        l0=Key("float", "unstretched towline length l0' (by L)", "L", "positive"),
+        length=Key("float", "unstretched towline length (instead of l0)", "m", "positive"),
+        xp=Key("float", "attachment point x_p' ahead of the CoG (by L)", "L", "finite"),
+        xp_m=Key("float", "attachment point ahead of the CoG (instead of xp)", "m", "finite"),
+        yp=Key("float", "attachment point y_p' to starboard (by L)", "L", "finite", 0.0),
+        EA=Key("float", "axial stiffness EA", "N", "positive"),
+        EA_nd=Key("float", "axial stiffness EA' = EA / (½ρTLU²) (instead of EA)", "-", "positive"),
+        bridle=Key(
+            "table",
+            "a symmetric bridle {x_legs, half_spread, apex_x} (by L): legs from "
+            "(x_legs, ±half_spread) to the apex, which is then the attachment point",
+        ),
+    ),
+    "tug": _keys(
+        bollard_pull_t=Key("float", "bollard pull", "t", "positive"),
+        free_speed=Key("float", "speed where the pull vanishes", "m/s", "positive"),
+        efficiency=Key("float", "offshore towing efficiency", "-", "unit", 1.0),
+        resistance_coefficient=Key(
+            "float",
+            "the tug's own resistance c U² (0: the pull curve is net)",
+            "N s²/m²",
+            "nonnegative",
+            0.0,
+        ),
+        speeds=Key("floats", "a pull table: speeds from 0 (instead of the quadratic curve)", "m/s"),
+        pulls_t=Key("floats", "a pull table: pulls at those speeds", "t"),
+    ),
+    "route": _keys(
+        length_nm=Key("float", "route length", "nm", "positive"),
+        length_m=Key("float", "route length (instead of length_nm)", "m", "positive"),
+    ),
+    "sea_state": _keys(
+        builtin=Key("str", "a thesis sea state: survival | sailing (other keys override it)"),
+        name=Key("str", "name in tables and the report"),
+        hs=Key("float", "significant wave height (0: calm water)", "m", "nonnegative"),
+        tp=Key("float", "JONSWAP peak period", "s", "positive"),
+        gamma=Key("float", "JONSWAP peak enhancement", "-", "positive", 3.3),
+        wind_speed=Key("float", "wind speed", "m/s", "nonnegative", 0.0),
+        current_speed=Key("float", "current speed", "m/s", "nonnegative", 0.0),
+        wave_angle_deg=Key(
+            "float", "waves from, relative to the course (0: head)", "deg", "finite", 0.0
+        ),
+        wind_angle_deg=Key("float", "wind from, relative to the course", "deg", "finite", 0.0),
+        current_angle_deg=Key(
+            "float", "current from, relative to the course", "deg", "finite", 0.0
+        ),
+    ),
+    "study": _keys(
+        map_xp=Key(
+            "grid", "x_p' grid of the stability map [lo, hi, n]", "L", default=[0.0, 0.6, 25]
+        ),
+        map_l0=Key(
+            "grid", "l0' grid of the stability map [lo, hi, n]", "L", default=[0.3, 3.0, 25]
+        ),
+        time_domain=Key("bool", "run the time-domain check", default=True),
+        t1=Key("float", "time-domain run length (by L/U_tug)", "-", "positive", 400.0),
+        psi0_deg=Key("float", "initial heading of the disturbed start", "deg", "finite", 0.0),
+        y0=Key("float", "initial sway offset of the CoG (by L)", "L", "finite", 0.3),
+        sea_states=Key("bool", "equilibria and stability in each sea state", default=True),
+        speeds=Key(
+            "grid", "tow speeds of the resistance table [lo, hi, n]", "m/s", default=[0.0, 3.5, 15]
+        ),
+    ),
+}
+
+#: Sections that are arrays of tables.
+ARRAYS = frozenset({"sea_state"})
+#: Sections a tow file must have.
+REQUIRED = ("tow", "vessel")
+
+
+class Invalid(ValueError):
+    """A value of the wrong kind or outside its rule (the message says which)."""
+
+
+def check_value(key: Key, value):
+    """``value`` converted to the key's kind; `Invalid` saying what is wrong otherwise."""
+    got = _check(key, value)
+    if isinstance(got, _Bad):
+        raise Invalid(got.message)
+    return got
+
+
+@dataclass(frozen=True)
+class _Bad:
+    message: str
+
+
+def _check(key: Key, value):
+    kind = key.kind
+    if kind in ("float", "int"):
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            return _Bad(f"expected a number, got {type(value).__name__} {value!r}")
+        v = float(value)
+        if not math.isfinite(v):
+            return _Bad(f"must be finite, got {value!r}")
+        rule = key.rule
+        if rule == "positive" and not v > 0:
+            return _Bad(f"must be > 0, got {value!r}")
+        if rule == "nonnegative" and not v >= 0:
+            return _Bad(f"must be >= 0, got {value!r}")
+        if rule == "unit" and not 0 < v <= 1:
+            return _Bad(f"must be in (0, 1], got {value!r}")
+        return v
+    if kind == "str":
+        return value if isinstance(value, str) else _Bad(f"expected a string, got {value!r}")
+    if kind == "bool":
+        return value if isinstance(value, bool) else _Bad(f"expected true or false, got {value!r}")
+    if kind == "table":
+        if isinstance(value, (str, dict)):
+            return value
+        return _Bad(f"expected a string or an inline table, got {value!r}")
+    if kind == "floats":
+        if not isinstance(value, list) or not all(
+            isinstance(x, (int, float)) and not isinstance(x, bool) for x in value
+        ):
+            return _Bad(f"expected a list of numbers, got {value!r}")
+        return [float(x) for x in value]
+    if kind == "grid":
+        ok = (
+            isinstance(value, list)
+            and len(value) == 3
+            and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value)
+        )
+        if not ok:
+            return _Bad(f"expected [lo, hi, n], got {value!r}")
+        lo, hi, n = value
+        if not (float(n) == int(n) and int(n) >= 1):
+            return _Bad(f"n must be a whole number >= 1, got {n!r}")
+        if int(n) > 1 and not hi > lo:
+            return _Bad(f"needs hi > lo, got [{lo}, {hi}]")
+        return [float(lo), float(hi), int(n)]
+    raise AssertionError(kind)
+
+
+_HEADER = re.compile(r"^\s*(\[\[?)\s*([A-Za-z0-9_.\-]+)\s*\]\]?")
+_KEYLINE = re.compile(r"^\s*([A-Za-z0-9_\-]+)\s*=")
+
+
+def locate(text: str, path: tuple) -> int | None:
+    """The 1-based line of ``path`` in the TOML ``text``: (section,), (section, key),
+    (section, index, key) for an array of tables, or a dotted sub-table (vessel,
+    derivatives, key). None where it is not written (a missing key)."""
+    if not text:
+        return None
+    want = [p for p in path if not isinstance(p, int)]
+    index = next((p for p in path if isinstance(p, int)), None)
+    counts: dict[str, int] = {}
+    current: tuple = ()
+    section_line = None
+    for n, line in enumerate(text.splitlines(), 1):
+        stripped = line.split("#", 1)[0]
+        h = _HEADER.match(stripped)
+        if h:
+            name = h.group(2)
+            if h.group(1) == "[[":
+                counts[name] = counts.get(name, -1) + 1
+                current = (name, counts[name])
+            else:
+                current = (name,)
+            names = tuple(name.split("."))
+            same_index = index is None or (len(current) > 1 and current[1] == index)
+            if names == tuple(want) and same_index:
+                return n
+            if names == tuple(want[: len(names)]) and same_index:
+                section_line = n
+            continue
+        sec = current[0].split(".") if current else []
+        idx = current[1] if len(current) > 1 else None
+        if index is not None and idx != index:
+            continue
+        rest = want[len(sec) :]
+        if sec != want[: len(sec)] or not rest:
+            continue
+        k = _KEYLINE.match(stripped)
+        if k and k.group(1) == rest[0]:
+            if len(rest) == 1:
+                return n
+            # a key inside an inline table on this line
+            if re.search(rf"[{{,]\s*{re.escape(rest[1])}\s*=", stripped):
+                return n
+            return n
+    return section_line
+
+
+def _toml_value(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        return repr(v)
+    if isinstance(v, str):
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    if isinstance(v, dict):
+        return "{" + ", ".join(f"{k} = {_toml_value(x)}" for k, x in v.items()) + "}"
+    raise TypeError(f"no TOML form for {v!r}")
+
+
+def to_toml(data: dict, comments: dict | None = None) -> str:
+    """TOML text of a resolved tow file (sections of scalars, lists and inline tables; arrays
+    of tables), with ``comments[(section, key)]`` after the values."""
+    comments = comments or {}
+    out = []
+    for section, body in data.items():
+        tables = body if isinstance(body, list) else [body]
+        for i, table in enumerate(tables):
+            out.append(f"[[{section}]]" if isinstance(body, list) else f"[{section}]")
+            for k, v in table.items():
+                if v is None:
+                    continue
+                line = f"{k} = {_toml_value(v)}"
+                note = comments.get((section, i, k)) or comments.get((section, k))
+                out.append(f"{line:<40} # {note}" if note else line)
+            out.append("")
+    return "\n".join(out)
+
+
+@dataclass
+class Problems:
+    """Collects the first error (raised) with its key and line."""
+
+    text: str
+    source: str
+    warnings: list = field(default_factory=list)
+
+    def error(self, path: tuple, message: str):
+        key = ".".join(str(p) if not isinstance(p, int) else f"[{p + 1}]" for p in path)
+        key = key.replace(".[", "[")
+        raise TowFileError(message, source=self.source, line=locate(self.text, path), key=key)
+
+    def warn(self, path: tuple, message: str):
+        import warnings
+
+        key = ".".join(str(p) if not isinstance(p, int) else f"[{p + 1}]" for p in path)
+        key = key.replace(".[", "[")
+        line = locate(self.text, path)
+        where = f"tow file {self.source}" + (f", line {line}" if line else "") + f", key {key}"
+        msg = f"{where}: {message}"
+        self.warnings.append(msg)
+        warnings.warn(msg, TowFileWarning, stacklevel=4)

@@ -1,0 +1,645 @@
+"""A tow described in one file: reading, validating and resolving a tow file into the
+objects of the model (vessel, towline, scales, drift source, tug, sea states)."""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from ._schema import (
+    ARRAYS,
+    REQUIRED,
+    SCHEMA,
+    Invalid,
+    Problems,
+    TowFileError,
+    check_value,
+    to_toml,
+)
+
+if TYPE_CHECKING:
+    from .._towline import AbstractTowline
+    from .._units import Scales
+    from .._vessel import Vessel
+    from ..drift import Waterline
+    from ..resistance import Tug
+
+__all__ = [
+    "BUILTIN_TOWS",
+    "DEPRECATED_NAMES",
+    "Tow",
+    "load",
+    "loads",
+    "builtin_text",
+    "canonical_name",
+    "template",
+    "show",
+]
+
+#: Built-in tow files (jaxtow/data/tows): one spelling everywhere in the command line.
+BUILTIN_TOWS = {"barge1": "barge1.toml", "barge2a": "barge2a.toml", "barge2b": "barge2b.toml"}
+#: Old spellings of the built-ins, accepted for one release with a deprecation message.
+DEPRECATED_NAMES = {"barge_2a": "barge2a", "barge_2b": "barge2b", "barge2": "barge2a"}
+
+_DERIVATIVES = ("m", "Izz", "R0", "Xvv", "Xrr", "Yv", "Yr", "Yvvv", "Yrrr", "Nv", "Nr", "Nvvv")
+_ADDED = ("a11", "a22", "a66")
+_BRIDLE = ("x_legs", "half_spread", "apex_x")
+_PAIRS = {  # the towline keys given one way or the other (exactly one of each pair)
+    "length": ("l0", "length"),
+    "attachment": ("xp", "xp_m"),
+    "stiffness": ("EA", "EA_nd"),
+}
+
+
+def canonical_name(name: str) -> tuple[str, str | None]:
+    """(built-in name, deprecation message or None) for a built-in tow's spelling; other
+    strings (file paths) pass through."""
+    if name in DEPRECATED_NAMES:
+        new = DEPRECATED_NAMES[name]
+        return new, f"the name {name!r} is deprecated and will be removed; use {new!r}"
+    return name, None
+
+
+def builtin_text(name: str) -> str:
+    """The TOML text of a built-in tow file."""
+    return resources.files("jaxtow").joinpath("data", "tows", BUILTIN_TOWS[name]).read_text()
+
+
+def template() -> str:
+    """A commented template of a tow file with every section and key (`jaxtow tow new`)."""
+    return resources.files("jaxtow").joinpath("data", "tows", "template.toml").read_text()
+
+
+@dataclass(frozen=True)
+class Tow:
+    """A resolved tow file. ``resolved`` is the file with every default filled in (what
+    `show` prints); ``assumed`` the (key, note) pairs of every estimate the results depend
+    on; ``warnings`` the values outside the physics' or the data's range. Build the model
+    objects with `model`, `resistance`, `sea_model`; `drift` gives the drift QTF."""
+
+    name: str
+    source: str
+    resolved: dict
+    scales: Scales
+    vessel: Vessel | None
+    towline: AbstractTowline | None
+    waterline: Waterline
+    drift_spec: object
+    form: str
+    tug: Tug | None
+    sea_states: tuple
+    route_length: float | None
+    study: dict
+    assumed: tuple
+    wind_table: object
+    wind_height: float
+    warnings: tuple = ()
+    _cache: dict = field(default_factory=dict, repr=False, compare=False)
+
+    # ------------------------------------------------------------------ model objects
+    def _need_model(self):
+        if self.vessel is None or self.towline is None:
+            missing = "[vessel] derivatives (or preset)" if self.vessel is None else "[towline]"
+            raise TowFileError(
+                f"this tow has no manoeuvring model: stability needs {missing}",
+                source=self.source,
+            )
+
+    def model(self, external=None):
+        """The `jaxtow.TowModel` of the tow (calm water unless ``external`` is given), with
+        its scales (so ``u_tug`` can be swept)."""
+        from .._dynamics import TowModel
+
+        self._need_model()
+        ext = {} if external is None else dict(external=external)
+        return TowModel(vessel=self.vessel, towline=self.towline, scales=self.scales, **ext)
+
+    def drift(self):
+        """(QTF, description) of the tow's wave-drift source (cached)."""
+        if "drift" not in self._cache:
+            from ..drift import METHODS
+            from ..drift._database import drift_source
+
+            spec = self.drift_spec
+            if isinstance(spec, str) and spec in METHODS:
+                from ..drift._compare import qtf_from_method
+                from ..study import QTF_BETA_DEG, QTF_OMEGA
+
+                q = qtf_from_method(spec, self.waterline, QTF_OMEGA, np_radians(QTF_BETA_DEG))
+                desc = (
+                    f"waterline method {spec!r} on the {self.waterline.name} waterline "
+                    "(diffraction only, no motion-induced drift)"
+                )
+                self._cache["drift"] = (q, desc)
+            else:
+                self._cache["drift"] = drift_source(spec)
+        return self._cache["drift"]
+
+    def resistance(self):
+        """The `jaxtow.resistance.TowResistance` of the tow (current from the manoeuvring
+        derivatives, wind from the wind table, mean drift from the drift source)."""
+        from .. import presets
+        from ..drift import METHODS
+        from ..resistance import WaveDrift
+
+        self._need_model()
+        sc = self.scales
+        if isinstance(self.drift_spec, str) and self.drift_spec in METHODS:
+            waves = WaveDrift(self.waterline, method=self.drift_spec)
+        else:
+            waves = WaveDrift(qtf=self.drift()[0], form=self.form)
+        return presets.resistance_model(
+            self.vessel,
+            sc.length,
+            float(self.resolved["vessel"]["breadth"]),
+            sc.draft,
+            waves,
+            wind_table=self.wind_table,
+            wind_height=self.wind_height,
+            name=self.name,
+            assumed=self.assumed,
+        )
+
+    def sea_model(self, sea, *, omega=None):
+        """The tow model in sea state ``sea``: mean irregular-sea drift (JONSWAP Hs, Tp, γ)
+        and the wind, both from ahead of the course (the model's head-sea convention); the
+        directions of ``sea`` enter the resistance budget only."""
+        from ..forces import CombinedForce
+        from ..forces._waves import IrregularWaveDriftForce
+        from ..forces._wind import WindForce
+        from ..waves import DEFAULT_OMEGA, Jonswap
+
+        self._need_model()
+        forces = []
+        if float(sea.hs) > 0:
+            forces.append(
+                IrregularWaveDriftForce(
+                    qtf=self.drift()[0],
+                    spectrum=Jonswap(hs=sea.hs, tp=sea.tp, gamma=sea.gamma),
+                    omega=DEFAULT_OMEGA if omega is None else omega,
+                    scales=self.scales,
+                    form=self.form,
+                )
+            )
+        if float(sea.wind_speed) > 0:
+            forces.append(
+                WindForce(load=self.resistance().wind, speed=sea.wind_speed, scales=self.scales)
+            )
+        ext = None if not forces else forces[0] if len(forces) == 1 else CombinedForce(forces)
+        return self.model(ext)
+
+    def show(self) -> str:
+        """The resolved file as TOML, each estimate marked (`jaxtow tow show`)."""
+        return show(self)
+
+
+def np_radians(x):
+    import numpy as np
+
+    return np.radians(x)
+
+
+# ---------------------------------------------------------------------- reading
+
+
+def load(spec) -> Tow:
+    """A `Tow` from a built-in name (`BUILTIN_TOWS`; old spellings with a deprecation
+    warning), a tow-file path, or an already parsed dict."""
+    import warnings
+
+    if isinstance(spec, dict):
+        return _build(spec, "", "<dict>")
+    spec = str(spec)
+    name, msg = canonical_name(spec)
+    if msg:
+        warnings.warn(msg, DeprecationWarning, stacklevel=2)
+    if name in BUILTIN_TOWS:
+        return loads(builtin_text(name), source=f"<built-in {name}>", base=None)
+    path = Path(spec)
+    if not path.is_file():
+        raise TowFileError(
+            f"no such file, and not a built-in tow ({', '.join(BUILTIN_TOWS)})", source=spec
+        )
+    return loads(path.read_text(), source=str(path), base=path.parent)
+
+
+def loads(text: str, source: str = "<string>", base=None) -> Tow:
+    """A `Tow` from TOML text; relative file names in it are taken from ``base``."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        m = _line_of(str(e))
+        raise TowFileError(f"not valid TOML: {e}", source=source, line=m) from None
+    return _build(data, text, source, base)
+
+
+def _line_of(message: str):
+    import re
+
+    m = re.search(r"line (\d+)", message)
+    return int(m.group(1)) if m else None
+
+
+def _check_section(p: Problems, name: str, table, index=None) -> dict:
+    path = (name,) if index is None else (name, index)
+    if not isinstance(table, dict):
+        p.error(path, "expected a table")
+    keys = SCHEMA[name]
+    out = {}
+    for k, v in table.items():
+        if k not in keys:
+            close = [c for c in keys if c.lower() == k.lower() or c.startswith(k[:3])]
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            p.error(path + (k,), f"unknown key{hint} (keys of [{name}]: {', '.join(keys)})")
+        try:
+            out[k] = check_value(keys[k], v)
+        except Invalid as e:
+            p.error(path + (k,), str(e))
+    for k, key in keys.items():
+        if k not in out and key.default is not None:
+            out[k] = list(key.default) if isinstance(key.default, list) else key.default
+    return out
+
+
+def _build(data: dict, text: str, source: str, base=None) -> Tow:
+    from .. import presets
+    from .._towline import Bridle, Towline
+    from .._units import Scales
+    from .._vessel import Vessel
+
+    p = Problems(text, source)
+    for k in data:
+        if k not in SCHEMA:
+            p.error((k,), f"unknown section [{k}] (sections: {', '.join(SCHEMA)})")
+    for k in REQUIRED:
+        if k not in data:
+            p.error((k,), f"missing section [{k}]")
+    if "sea_state" in data and not isinstance(data["sea_state"], list):
+        p.error(("sea_state",), "write sea states as [[sea_state]] (an array of tables)")
+    sec = {k: _check_section(p, k, data.get(k, {})) for k in SCHEMA if k not in ARRAYS}
+    seas_raw = [
+        _check_section(p, "sea_state", s, i) for i, s in enumerate(data.get("sea_state", []))
+    ]
+    assumed: list = []
+
+    # ---------------------------------------------------------------- tow
+    if "name" not in sec["tow"]:
+        p.error(("tow", "name"), "missing key: every tow needs a name")
+    speed = sec["tow"]["speed"]
+
+    # ---------------------------------------------------------------- vessel
+    v = sec["vessel"]
+    vessel = None
+    if "preset" in v:
+        if v["preset"] not in presets.VESSELS:
+            p.error(
+                ("vessel", "preset"),
+                f"unknown preset {v['preset']!r}; built-in vessels: {', '.join(presets.VESSELS)}",
+            )
+        if "derivatives" in v:
+            p.error(("vessel", "derivatives"), "give either preset or derivatives, not both")
+        for k, val in (("length", presets.BARGE2_LENGTH), ("breadth", presets.BARGE2_BREADTH)):
+            if k in v and v[k] != val:
+                p.error(
+                    ("vessel", k), f"the preset's {k} is {val} m; for another hull give derivatives"
+                )
+        v.setdefault("length", presets.BARGE2_LENGTH)
+        v.setdefault("breadth", presets.BARGE2_BREADTH)
+        if "draft" not in v:
+            v["draft"] = float(presets.ASSUMPTIONS["draft"]["value"])
+        vessel = presets.VESSELS[v["preset"]](v["draft"])
+        assumed += list(vessel.assumed)
+    else:
+        for k in ("length", "breadth", "draft"):
+            if k not in v:
+                p.error(
+                    ("vessel", k),
+                    "missing key: a vessel without a preset needs length, breadth and draft",
+                )
+        if "derivatives" in v:
+            d = v["derivatives"]
+            if not isinstance(d, dict):
+                p.error(("vessel", "derivatives"), "expected a table of derivatives")
+            for k, val in d.items():
+                if k not in _DERIVATIVES + _ADDED:
+                    p.error(
+                        ("vessel", "derivatives", k),
+                        f"unknown derivative (known: {', '.join(_DERIVATIVES + _ADDED)})",
+                    )
+                if (
+                    isinstance(val, bool)
+                    or not isinstance(val, (int, float))
+                    or not math.isfinite(val)
+                ):
+                    p.error(("vessel", "derivatives", k), f"expected a finite number, got {val!r}")
+            missing = [k for k in _DERIVATIVES if k not in d]
+            if missing:
+                p.error(("vessel", "derivatives"), f"missing derivative(s) {', '.join(missing)}")
+            vals = {k: float(d[k]) for k in d}
+            notes = []
+            if not all(k in vals for k in _ADDED):
+                added = presets.clarke_added_mass(vals["m"], v["length"], v["breadth"], v["draft"])
+                for k in _ADDED:
+                    if k not in vals:
+                        vals[k] = added[k]
+                        note = (
+                            presets.ASSUMPTIONS["a11_over_m"]["note"]
+                            if k == "a11"
+                            else presets.ASSUMPTIONS["a22,a66"]["note"].replace(
+                                "C_B from m' and T = 5.0 m", f"C_B from m' and T = {v['draft']} m"
+                            )
+                        )
+                        notes.append((k, note))
+            try:
+                vessel = Vessel(**vals, name=sec["tow"]["name"], assumed=tuple(notes))
+            except ValueError as e:
+                p.error(("vessel", "derivatives"), str(e))
+            assumed += notes
+    L, B, T = float(v["length"]), float(v["breadth"]), float(v["draft"])
+    scales = Scales(length=L, draft=T, u_tug=speed)
+
+    # ---------------------------------------------------------------- hull
+    h = sec["hull"]
+    from ..drift import METHODS
+
+    wl_spec = h.get("waterline", "barge2" if "preset" in v else "box")
+    h["waterline"] = wl_spec
+    from ..drift._waterline import barge2_waterline, box_waterline, read_waterline
+
+    if wl_spec == "box":
+        waterline = box_waterline(L, B, T)
+    elif wl_spec == "barge2":
+        waterline = barge2_waterline(T)
+    else:
+        path = _path(wl_spec, base)
+        if not path.is_file():
+            p.error(
+                ("hull", "waterline"), f"box, barge2 or a waterline file; no file {str(path)!r}"
+            )
+        try:
+            waterline = read_waterline(path, draft=T)
+        except (ValueError, OSError) as e:
+            p.error(("hull", "waterline"), str(e))
+    drift = h.get("drift")
+    if drift is None:
+        drift = "barge2:near_field" if "preset" in v else "kashiwagi"
+        h["drift"] = drift
+        if "preset" not in v:
+            assumed.append(
+                (
+                    "wave_drift",
+                    f"no drift source given: the Kashiwagi waterline method on the {wl_spec} waterline (estimate)",
+                )
+            )
+    if isinstance(drift, dict):
+        if "file" not in drift:
+            p.error(("hull", "drift"), "a drift-file table needs file = PATH")
+        drift = dict(drift, file=str(_path(drift["file"], base)))
+    elif isinstance(drift, str) and drift not in METHODS:
+        from ..drift import DATABASE_METHODS, DATABASES
+        from ..drift._database import STANDIN
+
+        hull_name, _, method = drift.rpartition(":")
+        known = drift == STANDIN or (hull_name in DATABASES and method in DATABASE_METHODS)
+        if not known:
+            if drift in DATABASE_METHODS:
+                p.error(
+                    ("hull", "drift"),
+                    f"name the hull too, e.g. 'barge2:{drift}' (hulls: {', '.join(DATABASES)})",
+                )
+            path = _path(drift, base)
+            if not path.is_file():
+                p.error(
+                    ("hull", "drift"),
+                    f"{drift!r} is not a shipped database (hull:method with hull in "
+                    f"{', '.join(DATABASES)}), {STANDIN!r}, a waterline method "
+                    f"({', '.join(METHODS)}) or a file",
+                )
+            drift = str(path)
+    form = h["sailing_form"]
+    if form not in ("aranha", "linear", "thesis"):
+        p.error(("hull", "sailing_form"), f"aranha, linear or thesis, got {form!r}")
+    if h["wind_table"] == "illustrative":
+        wind_table = presets.barge2_wind_table()
+        assumed.append(("wind_table", presets.ASSUMPTIONS["wind_table"]["note"]))
+    else:
+        from ..resistance._flow import CoefficientTable
+
+        path = _path(h["wind_table"], base)
+        try:
+            import numpy as np
+
+            t = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
+            if t.shape[1] != 4:
+                raise ValueError("expected 4 columns angle_deg, cx, cy, cn")
+            wind_table = CoefficientTable.symmetric(
+                t[:, 0], t[:, 1], t[:, 2], t[:, 3], label=f"wind table {path}"
+            )
+        except (ValueError, OSError) as e:
+            p.error(("hull", "wind_table"), f"{path}: {e}")
+    if "wind_height" not in h:
+        h["wind_height"] = float(presets.ASSUMPTIONS["wind_height"]["value"])
+        assumed.append(("wind_height", presets.ASSUMPTIONS["wind_height"]["note"]))
+    assumed.append(("wave_drift", _describe_drift(drift, form)))
+
+    # ---------------------------------------------------------------- towline
+    t = sec["towline"]
+    towline = None
+    if "towline" in data:
+        for pair in _PAIRS.values():
+            given = [k for k in pair if k in t]
+            if len(given) != 1 and not (pair[0] == "xp" and "bridle" in t):
+                what = "one of " + " or ".join(pair)
+                p.error(
+                    ("towline", pair[0]),
+                    f"give exactly {what}" + (" (got both)" if len(given) == 2 else ""),
+                )
+        l0 = t["l0"] if "l0" in t else t["length"] / L
+        if "EA_nd" in t:
+            EA_nd = t["EA_nd"]
+        else:
+            EA_nd = float(t["EA"] / scales.force)
+        if "bridle" in t:
+            b = t["bridle"]
+            if not isinstance(b, dict) or set(b) != set(_BRIDLE):
+                p.error(
+                    ("towline", "bridle"),
+                    f"expected {{{', '.join(k + ' = ...' for k in _BRIDLE)}}}",
+                )
+            if "xp" in t or "xp_m" in t:
+                p.error(("towline", "bridle"), "a bridle sets the attachment point: drop xp")
+            try:
+                towline = Bridle.symmetric(*(float(b[k]) for k in _BRIDLE)).towline(l0, EA_nd)
+            except ValueError as e:
+                p.error(("towline", "bridle"), str(e))
+        else:
+            xp = t["xp"] if "xp" in t else t["xp_m"] / L
+            try:
+                towline = Towline(l0=l0, xp=xp, EA=EA_nd, yp=t["yp"])
+            except ValueError as e:
+                p.error(("towline", _field_key(str(e), t)), str(e))
+        if "EA" in t and "preset" in v and t["EA"] == presets.ASSUMPTIONS["EA"]["value"]:
+            assumed.append(("EA", presets.ASSUMPTIONS["EA"]["note"]))
+    elif vessel is not None:
+        p.error(
+            ("towline",),
+            "missing section [towline]: a tow with a manoeuvring model needs its towline",
+        )
+
+    # ---------------------------------------------------------------- tug and route
+    tug = None
+    g = sec["tug"]
+    if any(k in g for k in ("bollard_pull_t", "free_speed", "speeds", "pulls_t")):
+        from ..resistance import Tug
+
+        tonne = 9.80665e3
+        eff = dict(efficiency=g["efficiency"], resistance_coefficient=g["resistance_coefficient"])
+        try:
+            if "speeds" in g or "pulls_t" in g:
+                for k in ("speeds", "pulls_t"):
+                    if k not in g:
+                        p.error(("tug", k), "a pull table needs both speeds and pulls_t")
+                if len(g["speeds"]) != len(g["pulls_t"]):
+                    p.error(("tug", "pulls_t"), "needs as many values as speeds")
+                import numpy as np
+
+                tug = Tug.from_table(g["speeds"], np.asarray(g["pulls_t"]) * tonne, **eff)
+            else:
+                for k in ("bollard_pull_t", "free_speed"):
+                    if k not in g:
+                        p.error(
+                            ("tug", k),
+                            "missing key: give bollard_pull_t and free_speed, or speeds and pulls_t",
+                        )
+                tug = Tug(
+                    bollard_pull=g["bollard_pull_t"] * tonne, free_speed=g["free_speed"], **eff
+                )
+        except ValueError as e:
+            p.error(("tug",), str(e))
+    r = sec["route"]
+    if "length_nm" in r and "length_m" in r:
+        p.error(("route", "length_m"), "give length_nm or length_m, not both")
+    route = r["length_nm"] * 1852.0 if "length_nm" in r else r.get("length_m")
+
+    # ---------------------------------------------------------------- sea states
+    from ..resistance import SeaState
+    from ..waves import physical_tp_range
+
+    seas = []
+    for i, s in enumerate(seas_raw):
+        if "builtin" in s:
+            if s["builtin"] not in presets.SEA_STATES:
+                p.error(
+                    ("sea_state", i, "builtin"),
+                    f"unknown sea state {s['builtin']!r}; built-in: {', '.join(presets.SEA_STATES)}",
+                )
+            base_s = presets.SEA_STATES[s["builtin"]]
+            for k, val in base_s.items():
+                if k not in data["sea_state"][i]:
+                    s[k] = float(val)
+            s.setdefault("name", s["builtin"])
+        for k in ("hs", "tp"):
+            if k not in s:
+                p.error(
+                    ("sea_state", i, k),
+                    "missing key: every sea state needs hs and tp (or a builtin)",
+                )
+        s.setdefault("name", f"sea state {i + 1}")
+        if s["hs"] > 0:
+            lo, hi = (float(x) for x in physical_tp_range(s["hs"]))
+            if not lo <= s["tp"] <= hi:
+                p.warn(
+                    ("sea_state", i, "tp"),
+                    f"Tp = {s['tp']:g} s is outside the physical range {lo:.2f}-{hi:.2f} s for "
+                    f"Hs = {s['hs']:g} m (thesis eq. 3.5): such a sea is steeper or flatter than "
+                    "wind seas are",
+                )
+        kw = {k: s[k] for k in ("hs", "tp", "gamma", "wind_speed", "current_speed")}
+        for k in ("wave_angle", "wind_angle", "current_angle"):
+            kw[k] = math.radians(s[f"{k}_deg"])
+        try:
+            seas.append(SeaState(**kw, name=s["name"]))
+        except ValueError as e:
+            p.error(("sea_state", i), str(e))
+    names = [s.name for s in seas]
+    if len(set(names)) != len(names):
+        i = next(i for i, n in enumerate(names) if names.index(n) != i)
+        p.error(("sea_state", i, "name"), f"sea-state names must differ; {names[i]!r} is repeated")
+
+    resolved = {k: val for k, val in sec.items() if k in data or k in REQUIRED}
+    resolved["vessel"] = {
+        k: v[k] for k in ("preset", "length", "breadth", "draft", "derivatives") if k in v
+    }
+    if seas_raw:
+        resolved["sea_state"] = seas_raw
+    resolved["study"] = sec["study"]
+    return Tow(
+        name=sec["tow"]["name"],
+        source=source,
+        resolved=resolved,
+        scales=scales,
+        vessel=vessel,
+        towline=towline,
+        waterline=waterline,
+        drift_spec=drift,
+        form=form,
+        tug=tug,
+        sea_states=tuple(seas),
+        route_length=route,
+        study=sec["study"],
+        assumed=tuple(assumed),
+        wind_table=wind_table,
+        wind_height=float(h["wind_height"]),
+        warnings=tuple(p.warnings),
+    )
+
+
+def _path(name, base) -> Path:
+    path = Path(name)
+    return path if path.is_absolute() or base is None else Path(base) / path
+
+
+def _field_key(message: str, t: dict) -> str:
+    for k in ("l0", "xp", "yp", "EA"):
+        if f"'{k}'" in message:
+            return {
+                "l0": "l0" if "l0" in t else "length",
+                "xp": "xp" if "xp" in t else "xp_m",
+                "EA": "EA" if "EA" in t else "EA_nd",
+            }.get(k, k)
+    return "l0"
+
+
+def _describe_drift(drift, form) -> str:
+    from ..drift import METHODS
+
+    if isinstance(drift, str) and drift in METHODS:
+        return f"waterline method {drift!r} (misses the motion-induced drift where L/lambda < 1)"
+    what = drift if isinstance(drift, str) else f"file {drift['file']}"
+    return f"drift source {what} ({form} sailing form)"
+
+
+def show(tow: Tow) -> str:
+    """The resolved tow file as TOML: every default filled in, each estimate commented."""
+    comments = {}
+    notes = dict(tow.assumed)
+    if "draft" in notes:
+        comments[("vessel", "draft")] = "ESTIMATE: " + notes["draft"]
+    if "EA" in notes:
+        comments[("towline", "EA")] = "ESTIMATE: " + notes["EA"]
+    if "wind_height" in notes:
+        comments[("hull", "wind_height")] = "ILLUSTRATIVE: " + notes["wind_height"]
+    if "wind_table" in notes:
+        comments[("hull", "wind_table")] = "ILLUSTRATIVE: not measured"
+    head = [
+        f"# {tow.name}: resolved from {tow.source} (every default filled in)",
+        "# estimates the results depend on:",
+        *(f"#   - {k}: {n}" for k, n in tow.assumed),
+        *(f"# WARNING {w}" for w in tow.warnings),
+        "",
+    ]
+    return "\n".join(head) + to_toml(tow.resolved, comments)
