@@ -2,7 +2,7 @@
 "Shipped databases").
 
     # 1. the panel solves (background; about 10 / 20 / 60 min on 2 cores at 2 / 1.5 / 1 m):
-    for p in 2 1.5 1; do jaxtow bem barge2 --panel-size $p --out RUNS/barge2_p$p; done
+    for p in 2 1.5 1; do jaxtow bem barge2a --panel-size $p --out RUNS/barge2_p$p; done
     jaxtow bem barge1 --panel-size 1.5 --out RUNS/barge1_p1.5
     # 2. the verdict study and the table (docs/data/mesh_study.{json,md}):
     python benchmarks/mesh_study.py --runs RUNS [--n 41] [--write]

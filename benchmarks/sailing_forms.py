@@ -7,7 +7,7 @@ Panel QTFs: the far-field tables of a coarse `jaxtow bem` run (2 m panels, 30 fr
 benchmarks/data/ with their provenance. Reproduce them with
 
     jaxtow bem barge1 --panel-size 2 --n-omega 30 --out bem_barge1
-    jaxtow bem barge2 --panel-size 2 --n-omega 30 --out bem_barge2
+    jaxtow bem barge2a --panel-size 2 --n-omega 30 --out bem_barge2
     python benchmarks/sailing_forms.py --bem bem_barge1 bem_barge2 --write
 
 Prints a Markdown table of the surge QTF peak at 2 m/s (and its shift from zero speed), the

@@ -97,8 +97,10 @@ from ._sweep import sweep as sweep, sweep_arrays as sweep_arrays
 from ._towline import (
     AbstractTowline as AbstractTowline,
     Bridle as Bridle,
+    CatenaryTowline as CatenaryTowline,
     PowerLawTowline as PowerLawTowline,
     Towline as Towline,
+    catenary_span as catenary_span,
 )
 from ._units import RHO_SEA as RHO_SEA, G as G, Scales as Scales, froude_number as froude_number
 from ._vessel import VESSEL_PARAMETERS as VESSEL_PARAMETERS, Vessel as Vessel
@@ -152,6 +154,8 @@ __all__ = [
     "sweep_arrays",
     "AbstractTowline",
     "Bridle",
+    "CatenaryTowline",
+    "catenary_span",
     "PowerLawTowline",
     "Towline",
     "RHO_SEA",

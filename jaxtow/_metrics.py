@@ -121,7 +121,8 @@ def fishtail_metrics(
     (min, max ψ in degrees), ``slewing_period`` (non-dimensional, None if no cycle),
     ``equilibrium`` (index into ``equilibria`` closest to the final state when converged),
     the damping ratio of the heading (`damping_ratio`), and flags ``ended_early``,
-    ``t_end`` and ``slack`` (fraction of samples with a slack towline, l' < l0').
+    ``t_end`` and ``slack`` (fraction of samples with a slack towline: zero tension, l' < l0'
+    for the elastic laws; a line with weight never goes slack).
     """
     from ._equilibrium import equilibria as find_equilibria
 
@@ -132,7 +133,9 @@ def fishtail_metrics(
     out = dict(
         ended_early=not bool(sim.success),
         t_end=float(t[-1]) if t.size else float(sim.ts[0]),
-        slack=float(np.mean(ys[:, 3] < float(model.towline.l0))) if ys.size else 0.0,
+        slack=float(np.mean(np.asarray(jax.vmap(model.towline.tension)(ys[:, 3])) <= 0.0))
+        if ys.size
+        else 0.0,
     )
     if t.size < 8:
         return out | dict(

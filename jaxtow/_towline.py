@@ -11,6 +11,7 @@ import abc
 from typing import TYPE_CHECKING
 
 import equinox as eqx
+import jax
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
@@ -174,3 +175,123 @@ class Bridle(eqx.Module):
     def taut(self, tension, a):
         """True where both legs carry tension (the equivalent-point model holds)."""
         return jnp.all(self.leg_tensions(tension, a) > 0, axis=0)
+
+
+#: Bisection steps on log H of the catenary's tension solve (a bracket of 60 in log H,
+#: halved 80 times: below the float64 resolution of H).
+_CATENARY_BISECTIONS = 80
+#: The bracket's width on log H below the elastic-line bound (e⁻⁶⁰ ≈ 1e-26).
+_CATENARY_LOG_SPAN = 60.0
+
+
+def _asinhc(a):
+    """asinh(a)/a, exact at a = 0 (the weightless limit) and smooth for a ≥ 0."""
+    small = a < 1e-4
+    safe = jnp.where(small, 1.0, a)
+    return jnp.where(small, 1.0 - a**2 / 6.0 + 3.0 * a**4 / 40.0, jnp.arcsinh(safe) / safe)
+
+
+def catenary_span(H, l0, EA, w):
+    """Horizontal span X of an elastic catenary (Irvine 1981, eq. 2.15 with both ends at the
+    same height): X = l0 (H/EA + asinh(a)/a), a = w l0 / (2H), for horizontal tension H > 0,
+    unstretched length l0, axial stiffness EA and weight per unit length w (any consistent
+    units; jaxtow's non-dimensional ones in `CatenaryTowline`)."""
+    a = w * l0 / (2.0 * H)
+    return l0 * (H / EA + _asinhc(a))
+
+
+@jax.custom_jvp
+def _catenary_tension(l, l0, EA, w):
+    """H with `catenary_span`(H) = l (0 where l ≤ 0): bisection on log H, then Newton; its
+    derivatives come from the implicit function theorem (the custom JVP)."""
+    hi = jnp.log(EA * jnp.maximum(l, l0) / l0 + w * l0)  # X(hi) ≥ l: X ≥ H l0 / EA
+    lo = hi - _CATENARY_LOG_SPAN
+
+    def step(_, bracket):
+        a, b = bracket
+        m = 0.5 * (a + b)
+        long = catenary_span(jnp.exp(m), l0, EA, w) > l
+        return jnp.where(long, a, m), jnp.where(long, m, b)
+
+    a, b = jax.lax.fori_loop(0, _CATENARY_BISECTIONS, step, (lo, hi))
+    # no root below the bracket: a weightless line shorter than l0 is slack
+    taut = (l > 0) & (catenary_span(jnp.exp(lo), l0, EA, w) < l)
+    return jnp.where(taut, jnp.exp(0.5 * (a + b)), 0.0)
+
+
+@_catenary_tension.defjvp
+def _catenary_tension_jvp(primals, tangents):
+    l, l0, EA, w = primals
+    H = _catenary_tension(l, l0, EA, w)
+    safe = jnp.where(H > 0, H, 1.0)
+    # X(H, l0, EA, w) = l  =>  X_H dH = dl − X_l0 dl0 − X_EA dEA − X_w dw
+    dl, dl0, dEA, dw = tangents
+    _, X_H = jax.jvp(lambda h: catenary_span(h, l0, EA, w), (safe,), (jnp.ones_like(safe),))
+    _, X_p = jax.jvp(lambda a, b, c: catenary_span(safe, a, b, c), (l0, EA, w), (dl0, dEA, dw))
+    dH = jnp.where(H > 0, (dl - X_p) / X_H, 0.0)
+    return H, dH
+
+
+class CatenaryTowline(AbstractTowline):
+    """A towline with weight: the elastic catenary (Irvine, *Cable Structures*, 1981, ch. 2)
+    between the hawser and the tug's towing point, both at the same height.
+
+    The tow model's towline force is the horizontal tension H', a function of the horizontal
+    span l' (the model's towline length): l' = l0' (H'/EA' + asinh(a)/a), a = w' l0'/(2H')
+    (`catenary_span`). A line with weight always pulls (H' > 0 for every span > 0) and is
+    never slack: its sag, not its stretch, carries a short span. As w' → 0 it is the elastic
+    line `Towline` (for l' > l0'); as EA' → ∞ the classic catenary.
+
+    ``l0``, ``xp``, ``yp``: as `Towline`; ``EA``: axial stiffness / (½ρTLU_tug²); ``w``:
+    submerged weight per unit length × L / (½ρTLU_tug²) (build from SI values with
+    `from_si`). The end tension, the sag and the lowest point are `end_tension`, `sag`,
+    `seabed_clearance`; `stiffness` the effective dH'/dl'.
+    """
+
+    l0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
+    xp: Float[Array, ""] = V.rule_field(rule=XP_RULE)
+    EA: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
+    w: Float[Array, ""] = V.rule_field(rule=V.NONNEGATIVE)
+    yp: Float[Array, ""] = V.rule_field(rule=YP_RULE, default=0.0)
+
+    @classmethod
+    def from_si(cls, length, weight, EA, *, scales, xp, yp=0.0):
+        """From a line of ``length`` [m], submerged weight ``weight`` [N/m] and axial
+        stiffness ``EA`` [N], on the tow of ``scales`` (`jaxtow.Scales`); ``xp``, ``yp`` by L."""
+        F, L = scales.force, scales.length
+        return cls(l0=length / L, xp=xp, EA=EA / F, w=weight * L / F, yp=yp)
+
+    def tension(self, l):
+        return _catenary_tension(jnp.asarray(l, float), self.l0, self.EA, self.w)
+
+    def length_at_tension(self, T):
+        return catenary_span(T, self.l0, self.EA, self.w)
+
+    def rescaled(self, factor):
+        return eqx.tree_at(lambda t: (t.EA, t.w), self, (self.EA * factor, self.w * factor))
+
+    def stiffness(self, l):
+        """Effective stiffness dH'/dl' at span l' (autodiff of the implicit solve)."""
+        return jax.grad(self.tension)(jnp.asarray(l, float))
+
+    def end_tension(self, l):
+        """Tension at either end, √(H'² + (w' l0'/2)²) (the hawser and the tug carry half
+        the weight each)."""
+        H = self.tension(l)
+        return jnp.sqrt(H**2 + (0.5 * self.w * self.l0) ** 2)
+
+    def sag(self, l):
+        """Depth of the lowest point (mid-span) below the ends, by L:
+        w' l0'²/(8 EA') + (H'/w')(√(1 + a²) − 1), a = w' l0'/(2H')."""
+        H = self.tension(l)
+        a = self.w * self.l0 / (2.0 * H)
+        # (H/w)(√(1+a²) − 1) = (l0/2) a / (√(1+a²) + 1): finite as w → 0
+        return self.w * self.l0**2 / (8.0 * self.EA) + 0.5 * self.l0 * a / (
+            jnp.sqrt(1.0 + a**2) + 1.0
+        )
+
+    def seabed_clearance(self, l, water_depth, end_depth=0.0):
+        """(clearance, ok): water depth less the lowest point's depth (the ends
+        ``end_depth`` below the surface, plus the sag), by L; ok where it is positive."""
+        c = water_depth - end_depth - self.sag(l)
+        return c, c > 0

@@ -400,3 +400,20 @@ def test_study_builtin_and_render_in_chromium(name, tmp_path):
     assert img.shape[0] == 3000 and img.shape[1] == 1100
     gray = img[..., :3].mean(axis=-1)
     assert gray.std() > 0.05 and (gray < 0.5).mean() > 0.005  # text and figures, not blank
+
+
+def test_docs_page_lists_every_key_of_the_schema():
+    page = (Path(__file__).parents[1] / "docs" / "towfile.md").read_text()
+    assert jt.tow.schema_markdown().strip() in page
+
+
+def test_resistance_takes_a_tow_and_still_reads_the_old_config(capsys):
+    from jaxtow.cli.resistance import inputs
+
+    tow, tug, seas, heading, route = inputs("barge2a")
+    assert tow.name == "barge2a" and [s.name for s in seas] == ["survival", "sailing"]
+    assert "deprecated" not in capsys.readouterr().err
+    old = inputs("barge2")
+    assert "deprecated" in capsys.readouterr().err and old[0].name == "barge_2a"
+    with pytest.raises(SystemExit, match="needs a manoeuvring model"):
+        inputs("barge1")

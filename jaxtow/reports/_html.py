@@ -131,6 +131,23 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
         rows.append(["towline length", f"{t['length_m']:.1f} m (l0' = {t['l0']:g})"])
         rows.append(["attachment", f"x_p' = {t['xp']:g}, y_p' = {t['yp']:g}"])
         rows.append(["stiffness EA'", f"{t['EA_nd']:.1f}"])
+        c = t.get("catenary")
+        if c:
+            rows.append(
+                [
+                    "catenary in calm water",
+                    f"span {c['span_m']:.1f} m, sag {c['sag_m']:.1f} m, end tension "
+                    f"{c['end_tension'] / 1e3:.1f} kN, effective stiffness "
+                    f"{c['effective_stiffness_nd']:.3g} (elastic EA'/l0' "
+                    f"{c['elastic_stiffness_nd']:.3g})"
+                    + (
+                        f", seabed clearance {c['seabed_clearance_m']:.1f} m in "
+                        f"{c['water_depth']:g} m of water"
+                        if "water_depth" in c
+                        else ""
+                    ),
+                ]
+            )
     if "tug" in s:
         g = s["tug"]
         rows.append(
@@ -306,6 +323,13 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
         if r.get("message"):
             parts.append(f"<li class='warn'>{_e(r['sea_state'])}: {_e(r['message'])}</li>")
             n += 1
+    cat = s.get("towline", {}).get("catenary", {})
+    if cat and not cat.get("seabed_clear", True):
+        parts.append(
+            f"<li class='bad'>the towline's lowest point ({cat['sag_m']:.0f} m below the "
+            f"ends) is below the seabed ({cat['water_depth']:g} m): it drags on the bottom.</li>"
+        )
+        n += 1
     for w in s.get("warnings", []):
         parts.append(f"<li class='warn'>{_e(w)}</li>")
         n += 1

@@ -98,7 +98,7 @@ class TowStudy:
     drift_curves: dict = field(default_factory=dict)
 
 
-def _equilibria_record(model, progress_label=""):
+def _equilibria_record(model):
     import jax.numpy as jnp
 
     from .._dynamics import all_valid, validity
@@ -108,7 +108,8 @@ def _equilibria_record(model, progress_label=""):
     eqs = equilibria(model)
     st = stability(model, eqs.state)
     found = np.asarray(eqs.valid)
-    rows, flags_all = [], {}
+    rows: list = []
+    flags_all: dict[str, bool] = {}
     for i in range(len(eqs)):
         flags = validity(model, eqs.state[i])
         bools = {k: bool(v) for k, v in flags.items() if jnp.asarray(v).dtype == bool}
@@ -131,7 +132,7 @@ def _equilibria_record(model, progress_label=""):
     outside = sorted(k for k, v in flags_all.items() if not v)
     if outside and key != "invalid":
         text += "; OUTSIDE the model's validity: " + "; ".join(
-            VALIDITY_WORDS.get(k, k) for k in outside
+            [VALIDITY_WORDS.get(str(k), str(k)) for k in outside]
         )
     return dict(
         equilibria=rows,
@@ -140,6 +141,33 @@ def _equilibria_record(model, progress_label=""):
         validity=flags_all,
         outside_validity=outside,
     )
+
+
+def _catenary_record(model, water_depth):
+    """Sag, end tension, effective stiffness and seabed clearance of a catenary towline at
+    the calm-water equilibrium nearest straight behind (SI)."""
+    from .._equilibrium import equilibria
+
+    eqs = equilibria(model)
+    k = int(np.argmin(np.where(np.asarray(eqs.valid), np.abs(np.asarray(eqs.psi)), np.inf)))
+    l = eqs.state[k, 3]
+    line, sc = model.towline, model.reference_scales()
+    sag = float(line.sag(l)) * sc.length
+    out = dict(
+        span_m=float(l) * sc.length,
+        horizontal_tension=float(line.tension(l) * sc.force),
+        end_tension=float(line.end_tension(l) * sc.force),
+        sag_m=sag,
+        effective_stiffness_nd=float(line.stiffness(l)),
+        elastic_stiffness_nd=float(line.EA / line.l0),
+    )
+    if water_depth is not None:
+        out.update(
+            water_depth=water_depth,
+            seabed_clearance_m=water_depth - sag,
+            seabed_clear=bool(water_depth - sag > 0),
+        )
+    return out
 
 
 def _grid(spec):
@@ -235,6 +263,9 @@ def tow_study(
         EA_nd=float(line.EA),  # pyright: ignore[reportAttributeAccessIssue]
         length_m=float(line.l0) * sc.length,
     )
+
+    if hasattr(line, "sag"):  # a line with weight: its catenary at the calm equilibrium
+        summary["towline"]["catenary"] = _catenary_record(model, tow.water_depth)
 
     # ---------------------------------------------------------------- resistance
     if tow.tug is not None:

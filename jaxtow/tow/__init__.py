@@ -21,6 +21,7 @@ from ._schema import (
     SCHEMA as SCHEMA,
     TowFileError as TowFileError,
     TowFileWarning as TowFileWarning,
+    schema_markdown as schema_markdown,
 )
 from ._tow import (
     BUILTIN_TOWS as BUILTIN_TOWS,
@@ -47,4 +48,5 @@ __all__ = [
     "loads",
     "show",
     "template",
+    "schema_markdown",
 ]

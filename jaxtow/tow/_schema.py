@@ -106,6 +106,13 @@ SCHEMA: dict[str, dict[str, Key]] = {
         yp=Key("float", "attachment point y_p' to starboard (by L)", "L", "finite", 0.0),
         EA=Key("float", "axial stiffness EA", "N", "positive"),
         EA_nd=Key("float", "axial stiffness EA' = EA / (½ρTLU²) (instead of EA)", "-", "positive"),
+        weight=Key(
+            "float",
+            "submerged weight per unit length: the line is an elastic catenary "
+            "(jaxtow.CatenaryTowline) instead of a straight elastic line",
+            "N/m",
+            "nonnegative",
+        ),
         bridle=Key(
             "table",
             "a symmetric bridle {x_legs, half_spread, apex_x} (by L): legs from "
@@ -129,6 +136,12 @@ SCHEMA: dict[str, dict[str, Key]] = {
     "route": _keys(
         length_nm=Key("float", "route length", "nm", "positive"),
         length_m=Key("float", "route length (instead of length_nm)", "m", "positive"),
+        water_depth=Key(
+            "float",
+            "least water depth on the route (the towline's seabed clearance)",
+            "m",
+            "positive",
+        ),
     ),
     "sea_state": _keys(
         builtin=Key("str", "a thesis sea state: survival | sailing (other keys override it)"),
@@ -342,3 +355,29 @@ class Problems:
         msg = f"{where}: {message}"
         self.warnings.append(msg)
         warnings.warn(msg, TowFileWarning, stacklevel=4)
+
+
+def schema_markdown() -> str:
+    """The key tables of docs/towfile.md, made from `SCHEMA` (a test keeps the page equal)."""
+    out = []
+    for sec, keys in SCHEMA.items():
+        head = f"[[{sec}]]" if sec in ARRAYS else f"[{sec}]"
+        out += [
+            f"### `{head}`",
+            "",
+            "| key | units | default | meaning |",
+            "| --- | --- | --- | --- |",
+        ]
+        for k, key in keys.items():
+            d = key.default
+            if d is None:
+                dflt = "—"
+            elif isinstance(d, bool):
+                dflt = f"`{str(d).lower()}`"
+            elif d == "":
+                dflt = '`""`'
+            else:
+                dflt = f"`{d}`"
+            out.append(f"| `{k}` | {key.units} | {dflt} | {key.doc.replace('|', chr(92) + '|')} |")
+        out.append("")
+    return "\n".join(out)

@@ -93,6 +93,7 @@ class Tow:
     tug: Tug | None
     sea_states: tuple
     route_length: float | None
+    water_depth: float | None
     study: dict
     assumed: tuple
     wind_table: object
@@ -267,7 +268,7 @@ def _check_section(p: Problems, name: str, table, index=None) -> dict:
 
 def _build(data: dict, text: str, source: str, base=None) -> Tow:
     from .. import presets
-    from .._towline import Bridle, Towline
+    from .._towline import Bridle, CatenaryTowline, Towline
     from .._units import Scales
     from .._vessel import Vessel
 
@@ -473,15 +474,21 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
             if "xp" in t or "xp_m" in t:
                 p.error(("towline", "bridle"), "a bridle sets the attachment point: drop xp")
             try:
-                towline = Bridle.symmetric(*(float(b[k]) for k in _BRIDLE)).towline(l0, EA_nd)
+                apex = Bridle.symmetric(*(float(b[k]) for k in _BRIDLE)).apex
             except ValueError as e:
                 p.error(("towline", "bridle"), str(e))
+            xp, yp = float(apex[0]), float(apex[1])
         else:
-            xp = t["xp"] if "xp" in t else t["xp_m"] / L
-            try:
-                towline = Towline(l0=l0, xp=xp, EA=EA_nd, yp=t["yp"])
-            except ValueError as e:
-                p.error(("towline", _field_key(str(e), t)), str(e))
+            xp, yp = (t["xp"] if "xp" in t else t["xp_m"] / L), t["yp"]
+        try:
+            if "weight" in t:
+                towline = CatenaryTowline(
+                    l0=l0, xp=xp, EA=EA_nd, w=float(t["weight"] * L / scales.force), yp=yp
+                )
+            else:
+                towline = Towline(l0=l0, xp=xp, EA=EA_nd, yp=yp)
+        except ValueError as e:
+            p.error(("towline", _field_key(str(e), t)), str(e))
         if "EA" in t and "preset" in v and t["EA"] == presets.ASSUMPTIONS["EA"]["value"]:
             assumed.append(("EA", presets.ASSUMPTIONS["EA"]["note"]))
     elif vessel is not None:
@@ -524,6 +531,7 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
     if "length_nm" in r and "length_m" in r:
         p.error(("route", "length_m"), "give length_nm or length_m, not both")
     route = r["length_nm"] * 1852.0 if "length_nm" in r else r.get("length_m")
+    water_depth = r.get("water_depth")
 
     # ---------------------------------------------------------------- sea states
     from ..resistance import SeaState
@@ -590,6 +598,7 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
         tug=tug,
         sea_states=tuple(seas),
         route_length=route,
+        water_depth=water_depth,
         study=sec["study"],
         assumed=tuple(assumed),
         wind_table=wind_table,
