@@ -21,6 +21,7 @@ PUBLIC = [
     "jaxtow.presets",
     "jaxtow.study",
     "jaxtow.reports",
+    "jaxtow.tow",
     "jaxtow.io",
     "jaxtow.plotting",
     "jaxtow.bem",

@@ -107,6 +107,7 @@ def test_seabed_clearance_and_rescaling():
 WIRE_WEIGHT = 23.6 * 9.80665 * (1 - 1025.0 / 7850.0)
 
 
+@pytest.mark.slow
 def test_barge2_on_a_600_m_steel_wire_against_the_elastic_line():
     """The catenary of 600 m of 76 mm wire against the elastic line of the same EA: the
     equilibria keep their headings, the straight one sits at a shorter span (the sag), and

@@ -417,3 +417,19 @@ def test_resistance_takes_a_tow_and_still_reads_the_old_config(capsys):
     assert "deprecated" in capsys.readouterr().err and old[0].name == "barge_2a"
     with pytest.raises(SystemExit, match="needs a manoeuvring model"):
         inputs("barge1")
+
+
+def test_a_towline_with_weight_is_the_elastic_catenary():
+    text = _replace("EA = 2.6e8", "EA = 2.6e8\nweight = 201.2").replace(
+        "length_nm = 500.0", "length_nm = 500.0\nwater_depth = 80.0"
+    )
+    tow = jt.tow.loads(text, source="w.toml")
+    ref = jt.CatenaryTowline.from_si(190.5, 201.2, 2.6e8, scales=tow.scales, xp=0.5)
+    assert isinstance(tow.towline, jt.CatenaryTowline)
+    _leaves_equal(tow.towline, ref)
+    assert tow.water_depth == 80.0
+    from jaxtow.reports._tow import _catenary_record
+
+    rec = _catenary_record(tow.model(), tow.water_depth)
+    assert rec["sag_m"] > 0 and rec["seabed_clear"] == (rec["sag_m"] < 80.0)
+    assert rec["effective_stiffness_nd"] < rec["elastic_stiffness_nd"]

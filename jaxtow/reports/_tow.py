@@ -151,7 +151,7 @@ def _catenary_record(model, water_depth):
     eqs = equilibria(model)
     k = int(np.argmin(np.where(np.asarray(eqs.valid), np.abs(np.asarray(eqs.psi)), np.inf)))
     l = eqs.state[k, 3]
-    line, sc = model.towline, model.reference_scales()
+    line, sc = model.towline, model.reference_scales
     sag = float(line.sag(l)) * sc.length
     out = dict(
         span_m=float(l) * sc.length,
