@@ -433,3 +433,32 @@ def test_a_towline_with_weight_is_the_elastic_catenary():
     rec = _catenary_record(tow.model(), tow.water_depth)
     assert rec["sag_m"] > 0 and rec["seabed_clear"] == (rec["sag_m"] < 80.0)
     assert rec["effective_stiffness_nd"] < rec["elastic_stiffness_nd"]
+
+
+def test_a_hull_mesh_is_solved_once_and_cached_beside_the_tow_file(tmp_path):
+    """[hull] mesh: a Capytaine panel solve of the user's hull file (here a coarse Barge 1
+    box written as WAMIT .gdf), cached per frequency next to the tow file."""
+    pytest.importorskip("capytaine", reason="the panel-method extra (jaxtow[bem]) is not installed")
+    from jaxtow import bem
+
+    m = bem.box_barge_mesh(panel_size=8.0)
+    q = m.vertices[m.faces]
+    lines = ["box barge", "1.0 9.80665", "0 0", str(len(q))]
+    lines += [" ".join(f"{c:.10f}" for c in v) for v in q.reshape(-1, 3)]
+    (tmp_path / "box.gdf").write_text("\n".join(lines) + "\n")
+    text = _replace(
+        'drift = "barge2:near_field"',
+        'mesh = {file = "box.gdf", omega = [0.6, 1.4, 2], beta_deg = [0, 180, 3], cog_z = 10.0}',
+    )
+    f = tmp_path / "mesh.toml"
+    f.write_text(text)
+    tow = jt.tow.load(f)
+    qtf, desc = tow.drift()
+    assert "box.gdf" in desc and qtf.values.shape == (3, 2, 5)  # headings completed to ±180°
+    assert any("panel solve of mesh" in n for _, n in tow.assumed)
+    cached = list((tmp_path / ".jaxtow_bem" / "box").glob("*.nc"))
+    assert len(cached) == 2
+    again, _ = jt.tow.load(f).drift()
+    np.testing.assert_array_equal(np.asarray(again.values), np.asarray(qtf.values))
+    with pytest.raises(TowFileError, match="either drift or mesh"):
+        jt.tow.loads(text.replace("[hull]", '[hull]\ndrift = "standin"'), source="x", base=tmp_path)

@@ -87,6 +87,13 @@ SCHEMA: dict[str, dict[str, Key]] = {
             "...) on the waterline, or a drift file as a path or {file = PATH, ulen = ..., "
             "rho = ..., g = ..., reference_point = ..., symmetry = ..., moment_set = ...}",
         ),
+        mesh=Key(
+            "table",
+            "a hull mesh for a panel solve instead of drift (Capytaine, the bem extra): a "
+            "path, or {file = PATH, method = near_field | far_field, omega = [lo, hi, n], "
+            "beta_deg = [0, 180, n], cog_z = ..., symmetric = true}; solved once per "
+            "frequency and cached beside the tow file",
+        ),
         sailing_form=Key(
             "str", "forward-speed form of the drift: aranha | linear | thesis", default="aranha"
         ),

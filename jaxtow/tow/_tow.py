@@ -126,7 +126,9 @@ class Tow:
             from ..drift._database import drift_source
 
             spec = self.drift_spec
-            if isinstance(spec, str) and spec in METHODS:
+            if isinstance(spec, dict) and "mesh" in spec:
+                self._cache["drift"] = _mesh_drift(spec, self.resolved["hull"]["sailing_form"])
+            elif isinstance(spec, str) and spec in METHODS:
                 from ..drift._compare import qtf_from_method
                 from ..study import QTF_BETA_DEG, QTF_OMEGA
 
@@ -386,6 +388,10 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
         except (ValueError, OSError) as e:
             p.error(("hull", "waterline"), str(e))
     drift = h.get("drift")
+    if "mesh" in h:
+        if drift is not None:
+            p.error(("hull", "mesh"), "give either drift or mesh, not both")
+        drift = _mesh_spec(p, h["mesh"], base, T)
     if drift is None:
         drift = "barge2:near_field" if "preset" in v else "kashiwagi"
         h["drift"] = drift
@@ -396,7 +402,9 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
                     f"no drift source given: the Kashiwagi waterline method on the {wl_spec} waterline (estimate)",
                 )
             )
-    if isinstance(drift, dict):
+    if isinstance(drift, dict) and "mesh" in drift:
+        pass
+    elif isinstance(drift, dict):
         if "file" not in drift:
             p.error(("hull", "drift"), "a drift-file table needs file = PATH")
         drift = dict(drift, file=str(_path(drift["file"], base)))
@@ -607,6 +615,67 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
     )
 
 
+_MESH_KEYS = {"file", "method", "omega", "beta_deg", "cog_z", "symmetric"}
+
+
+def _mesh_spec(p: Problems, mesh, base, draft) -> dict:
+    """The resolved [hull] mesh table (checked; solved lazily by `Tow.drift`)."""
+    m = {"file": mesh} if isinstance(mesh, str) else dict(mesh)
+    extra = set(m) - _MESH_KEYS
+    if extra or "file" not in m:
+        p.error(
+            ("hull", "mesh"),
+            f"expected a path or {{{', '.join(sorted(_MESH_KEYS))}}}; got {sorted(m)}",
+        )
+    path = _path(m["file"], base)
+    if not path.is_file():
+        p.error(("hull", "mesh"), f"no mesh file {str(path)!r}")
+    if m.get("method", "near_field") not in ("near_field", "far_field"):
+        p.error(("hull", "mesh"), f"method near_field or far_field, got {m['method']!r}")
+    from ._schema import Key
+
+    for k, default in (("omega", [0.05, 2.5, 61]), ("beta_deg", [0.0, 180.0, 25])):
+        try:
+            m[k] = check_value(Key("grid", k), m.get(k, default))
+        except Invalid as e:
+            p.error(("hull", "mesh"), f"{k}: {e}")
+    cache = path.parent / ".jaxtow_bem" / path.stem
+    return dict(
+        mesh=str(path),
+        method=m.get("method", "near_field"),
+        omega=m["omega"],
+        beta_deg=m["beta_deg"],
+        cog_z=m.get("cog_z"),
+        symmetric=bool(m.get("symmetric", True)),
+        cache=str(cache),
+    )
+
+
+def _mesh_drift(spec: dict, form: str):
+    """(QTF, description) of a mesh by a Capytaine panel solve (cached per frequency)."""
+    import numpy as np
+
+    from .. import bem
+
+    try:
+        bem.require_capytaine()
+    except ImportError as e:
+        raise TowFileError(f"[hull] mesh needs the panel-method extra: {e}") from None
+    mesh = bem.read_mesh(spec["mesh"])
+    (w0, w1, nw), (b0, b1, nb) = spec["omega"], spec["beta_deg"]
+    omega = np.linspace(float(w0), float(w1), int(nw))
+    beta = np.radians(np.linspace(float(b0), float(b1), int(nb)))
+    ds = bem.bem_drift(
+        mesh, omega, beta, cog_z=spec["cog_z"], cache_dir=spec["cache"], progress=True
+    )
+    q = bem.qtf_from_bem(ds, spec["method"], symmetric=spec["symmetric"])
+    desc = (
+        f"panel QTF of mesh {spec['mesh']} ({spec['method'].replace('_', ' ')}, jaxtow bem, "
+        f"{len(mesh.faces)} hull panels; {form} sailing form)"
+    )
+    return q, desc
+
+
 def _path(name, base) -> Path:
     path = Path(name)
     return path if path.is_absolute() or base is None else Path(base) / path
@@ -628,6 +697,12 @@ def _describe_drift(drift, form) -> str:
 
     if isinstance(drift, str) and drift in METHODS:
         return f"waterline method {drift!r} (misses the motion-induced drift where L/lambda < 1)"
+    if isinstance(drift, dict) and "mesh" in drift:
+        return (
+            f"panel solve of mesh {drift['mesh']} ({drift['method']}; CoG height, radii of "
+            "gyration and roll damping: the documented estimates of jaxtow.presets.ASSUMPTIONS "
+            "unless cog_z is given)"
+        )
     what = drift if isinstance(drift, str) else f"file {drift['file']}"
     return f"drift source {what} ({form} sailing form)"
 
