@@ -60,6 +60,8 @@ __all__ = [
     "barge2_scales",
     "block_coefficient_from_mass",
     "clarke_added_mass",
+    "clarke_linear_derivatives",
+    "CLARKE_LB_RANGE",
     "radii_of_gyration",
     "barge2_rake",
     "barge_2a",
@@ -284,6 +286,38 @@ def clarke_added_mass(
     yvdot = math.pi * t_l**2 * (1.0 + 0.16 * cb * b_t - 5.1 * b_l**2)  # by ½ρL³
     nrdot = math.pi * t_l**2 * (1.0 / 12.0 + 0.017 * cb * b_t - 0.33 * b_l)  # by ½ρL⁵
     return dict(a11=a11_fraction * m_nd, a22=yvdot / t_l, a66=nrdot / t_l)
+
+
+#: Validity of the Clarke, Gedling & Hine (1983) regressions as commonly quoted: the model
+#: tests covered ships and barges of L/B 3.9-9.0 (flagged, not refused, outside it).
+CLARKE_LB_RANGE = (3.0, 9.0)
+
+
+def clarke_linear_derivatives(
+    length: float, breadth: float, draft: float, block_coefficient: float
+) -> dict:
+    """Linear sway and yaw derivatives from Clarke, Gedling & Hine (1983), "The application
+    of manoeuvring criteria in hull design using linear theory", Trans. RINA 125, 45-68
+    (regressions of rotating-arm and PMM tests), with S = π(T/L)²:
+
+    −Y_v' = S (1 + 0.40 C_B B/T),        −Y_r' = S (−1/2 + 2.2 B/L − 0.080 B/T),
+    −N_v' = S (1/2 + 2.4 T/L),           −N_r' = S (1/4 + 0.039 B/T − 0.56 B/L),
+
+    on ½ρL²U (Y_v), ½ρL³U (Y_r, N_v), ½ρL⁴U (N_r), converted here to the Hong et al. scales
+    of `jaxtow.Vessel` (½ρTLU etc.: multiply by L/T). Returns the four derivatives and
+    ``lb_in_range`` (L/B inside `CLARKE_LB_RANGE`). The regressions are for ship forms: a
+    barge's skegs, rake and square bilges are outside what they describe (docs/estimates.md
+    compares them with Barge 2a/2b's measured values)."""
+    L, B, T, cb = (float(x) for x in (length, breadth, draft, block_coefficient))
+    S = math.pi * (T / L) ** 2
+    to_hong = L / T
+    return dict(
+        Yv=-S * (1.0 + 0.40 * cb * B / T) * to_hong,
+        Yr=-S * (-0.5 + 2.2 * B / L - 0.080 * B / T) * to_hong,
+        Nv=-S * (0.5 + 2.4 * T / L) * to_hong,
+        Nr=-S * (0.25 + 0.039 * B / T - 0.56 * B / L) * to_hong,
+        lb_in_range=CLARKE_LB_RANGE[0] <= L / B <= CLARKE_LB_RANGE[1],
+    )
 
 
 def radii_of_gyration(length: float, breadth: float) -> tuple[float, float, float]:

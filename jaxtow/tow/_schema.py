@@ -67,6 +67,13 @@ SCHEMA: dict[str, dict[str, Key]] = {
         length=Key("float", "length L (the model's length scale)", "m", "positive"),
         breadth=Key("float", "breadth B", "m", "positive"),
         draft=Key("float", "draft T (default for a preset: the documented 5.0 m)", "m", "positive"),
+        block_coefficient=Key(
+            "float",
+            "C_B: estimates the linear derivatives Yv, Yr, Nv, Nr that [vessel.derivatives] "
+            "leaves out (Clarke, Gedling & Hine 1983; no appendages, so no skegs)",
+            "-",
+            "unit",
+        ),
         derivatives=Key(
             "table",
             "non-dimensional mass and manoeuvring derivatives (Hong et al. convention, "

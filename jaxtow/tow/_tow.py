@@ -339,11 +339,27 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
                     or not math.isfinite(val)
                 ):
                     p.error(("vessel", "derivatives", k), f"expected a finite number, got {val!r}")
+            linear = [k for k in ("Yv", "Yr", "Nv", "Nr") if k not in d]
+            extra_notes = []
+            if linear and "block_coefficient" in v:
+                est = presets.clarke_linear_derivatives(
+                    v["length"], v["breadth"], v["draft"], v["block_coefficient"]
+                )
+                d = {**d, **{k: est[k] for k in linear}}
+                where = "" if est["lb_in_range"] else "; L/B OUTSIDE the regression's range"
+                extra_notes = [
+                    (
+                        k,
+                        f"Clarke, Gedling & Hine (1983) linear regression with C_B = "
+                        f"{v['block_coefficient']:g} (no appendages: skegs are not seen){where}; estimate",
+                    )
+                    for k in linear
+                ]
             missing = [k for k in _DERIVATIVES if k not in d]
             if missing:
                 p.error(("vessel", "derivatives"), f"missing derivative(s) {', '.join(missing)}")
             vals = {k: float(d[k]) for k in d}
-            notes = []
+            notes = list(extra_notes)
             if not all(k in vals for k in _ADDED):
                 added = presets.clarke_added_mass(vals["m"], v["length"], v["breadth"], v["draft"])
                 for k in _ADDED:
@@ -588,7 +604,9 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
 
     resolved = {k: val for k, val in sec.items() if k in data or k in REQUIRED}
     resolved["vessel"] = {
-        k: v[k] for k in ("preset", "length", "breadth", "draft", "derivatives") if k in v
+        k: v[k]
+        for k in ("preset", "length", "breadth", "draft", "block_coefficient", "derivatives")
+        if k in v
     }
     if seas_raw:
         resolved["sea_state"] = seas_raw
