@@ -290,7 +290,8 @@ def test_study_on_barge1_reports_drift_and_says_what_it_skips(tmp_path, capsys):
     main(["study", "barge1", "--out", str(tmp_path), "--quiet"])
     s = json.loads((tmp_path / "barge1_summary.json").read_text())
     assert "stability, resistance and time domain" in s["skipped"]
-    # the far-field database tends to the wall limit in short waves (docs/bem.md)
+    # the far-field database tends to the wall limit in short waves (docs/bem.md: 0.974)
+    assert s["head_sea_surge_at_highest_omega_over_wall_limit"] == pytest.approx(0.974, abs=0.01)
     assert [r["sea_state"] for r in s["mean_drift"]] == ["survival", "sailing"]
     assert all(r["fx_design_speed"] < r["fx_stationary"] < 0 for r in s["mean_drift"])
     text = check_report(tmp_path / "barge1_report.html", ["drift"])

@@ -286,6 +286,13 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
     # ------------------------------------------------------------------ drift
     parts.append('<section id="drift"><h2>Wave drift</h2>')
     parts.append(f"<p>Source: {_e(s['drift_source'])}.</p>")
+    r = s.get("head_sea_surge_at_highest_omega_over_wall_limit")
+    if r is not None:
+        parts.append(
+            f"<p>Head-sea surge drift at the table's highest frequency: {r:.3f} of the "
+            "short-wave wall limit ρgB/2 (Faltinsen; 1 for a wall-sided bow in short waves, "
+            "less for a raked one).</p>"
+        )
     if s.get("mean_drift"):
         parts.append(
             _table(

@@ -190,12 +190,14 @@ def tow_study(
     and the speeds default to the tow file's ``[study]``; the keywords override them (the
     tests use small grids). Steps the tow cannot take (no manoeuvring model, no tug, no
     sea state) are listed in ``summary['skipped']`` with the reason."""
+    import jax
     import jax.numpy as jnp
 
     from .. import resistance as R
     from .._metrics import fishtail_metrics, trajectory
     from .._simulate import initial_state, simulate
     from .._sweep import sweep
+    from .._units import RHO_SEA, G
     from ..drift import irregular_sailing_drift
     from ..waves import DEFAULT_OMEGA, Jonswap
     from ._resistance import evaluate
@@ -231,10 +233,11 @@ def tow_study(
     )
     # head-sea drift of the hull and the mean drift in each sea state (no model needed)
     w = np.asarray(q.omega)
-    import jax
-
-    fx = np.asarray(jax.vmap(lambda x: q.moments(x, 0.0))(jnp.asarray(w))[:, 0])
+    fx = np.asarray(jax.vmap(lambda x: q(x, 0.0))(jnp.asarray(w))[:, 0])
     res.drift_curves["head_sea_fx"] = (w, fx)
+    # Faltinsen's short-wave limit of head-sea surge drift on a wall-sided bow: ½ρgB
+    wall = 0.5 * RHO_SEA * G * float(tow.resolved["vessel"]["breadth"])
+    summary["head_sea_surge_at_highest_omega_over_wall_limit"] = float(-fx[-1] / wall)
     drift_rows = []
     for s in seas:
         if float(s.hs) <= 0:
