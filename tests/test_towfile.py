@@ -299,6 +299,7 @@ def test_study_on_barge1_reports_drift_and_says_what_it_skips(tmp_path, capsys):
     assert "not assessed" in capsys.readouterr().out
 
 
+@pytest.mark.slow
 def test_study_small_grids_writes_report_with_every_section(tmp_path):
     """A Barge 2b tow with one sea state (the built-in's first; its stability in waves is
     left to the slow suite, which runs the built-ins in full) on small grids: the calm

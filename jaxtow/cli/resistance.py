@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..reports._resistance import eqx_tp as eqx_tp, evaluate as evaluate
+from ..reports._resistance import eqx_tp as eqx_tp, evaluate as evaluate, resistance_table
 from ._config import config_dispatch, read_config as _read_config
 
 NM = 1852.0  # m
@@ -133,51 +133,9 @@ def format_table(rows: list, tug, route_length) -> str:
         f"top speed {float(tug.max_speed):g} m/s"
         + (f"; route {route_length / NM:g} nm" if route_length else "")
     )
-    cols = (
-        "sea state",
-        "Hs m",
-        "Tp s",
-        "wind m/s",
-        "hold kN",
-        "req. BP t",
-        "worst BP t @Tp s",
-        "U_op m/s (kn)",
-        "Fn",
-        "transit h",
-        "% current/wind/waves/tug at U_op",
-    )
-    table, notes = [list(cols)], []
-    for r in rows:
-        worst = (
-            f"{r['worst_required_bollard_pull'] / TONNE_FORCE:.1f} @{r['worst_tp']:.1f}"
-            if "worst_tp" in r
-            else "-"
-        )
-        if "operating_speed" in r:
-            tot = sum(r["operating_resistance"].values())
-            shares = "/".join(f"{100 * v / tot:.0f}" for v in r["operating_resistance"].values())
-            speed = f"{r['operating_speed']:.2f} ({r['operating_speed'] / 0.514444:.1f})"
-            fn = f"{r['froude']:.3f}"
-            transit = f"{r['transit_time_h']:.0f}" if "transit_time_h" in r else "-"
-        else:
-            shares = speed = fn = transit = "-"
-        table.append(
-            [
-                r["sea_state"],
-                f"{r['hs']:g}",
-                f"{r['tp']:g}",
-                f"{r['wind_speed']:g}",
-                f"{r['hold_towing_force'] / 1e3:.1f}",
-                f"{r['required_bollard_pull'] / TONNE_FORCE:.1f}",
-                worst,
-                speed,
-                fn,
-                transit,
-                shares,
-            ]
-        )
-        if r["message"]:
-            notes.append(f"! {r['sea_state']}: {r['message']}")
+    cols, body = resistance_table(rows)
+    table = [list(cols), *body]
+    notes = [f"! {r['sea_state']}: {r['message']}" for r in rows if r["message"]]
     width = [max(len(row[j]) for row in table) for j in range(len(cols))]
     lines = [head, ""]
     for k, row in enumerate(table):

@@ -162,49 +162,9 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
     # ------------------------------------------------------------------ resistance
     parts.append('<section id="resistance"><h2>Resistance, bollard pull and speed</h2>')
     if "resistance" in s:
-        head = [
-            "sea state",
-            "Hs m",
-            "Tp s",
-            "wind m/s",
-            "hold kN",
-            "req. BP t",
-            "worst BP t (Tp s)",
-            "U_op m/s",
-            "Fn",
-            "transit h",
-            "current/wind/waves % at U_op",
-        ]
-        rows = []
-        for r in s["resistance"]:
-            worst = (
-                f"{r['worst_required_bollard_pull'] / _TONNE:.1f} ({r['worst_tp']:.1f})"
-                if "worst_tp" in r
-                else "-"
-            )
-            if "operating_resistance" in r:
-                tot = sum(r["operating_resistance"].values()) or 1.0
-                shares = "/".join(
-                    f"{100 * r['operating_resistance'][k] / tot:.0f}"
-                    for k in ("current", "wind", "waves")
-                )
-            else:
-                shares = "-"
-            rows.append(
-                [
-                    r["sea_state"],
-                    f"{r['hs']:g}",
-                    f"{r['tp']:g}",
-                    f"{r['wind_speed']:g}",
-                    f"{r['hold_towing_force'] / 1e3:.1f}",
-                    f"{r['required_bollard_pull'] / _TONNE:.1f}",
-                    worst,
-                    _fmt(r.get("operating_speed"), "{:.2f}"),
-                    _fmt(r.get("froude"), "{:.3f}"),
-                    _fmt(r.get("transit_time_h"), "{:.0f}"),
-                    shares,
-                ]
-            )
+        from ._resistance import resistance_table
+
+        head, rows = resistance_table(s["resistance"])
         parts.append(_table(head, rows))
         parts.append(
             "<p class='note'>hold: towing force at zero speed; req. BP: the tug's rated "

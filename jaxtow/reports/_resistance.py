@@ -57,3 +57,56 @@ def eqx_tp(sea, tp):
     import equinox as eqx
 
     return eqx.tree_at(lambda s: s.tp, sea, tp)
+
+
+#: The columns of `resistance_table`.
+TABLE_COLUMNS = (
+    "sea state",
+    "Hs m",
+    "Tp s",
+    "wind m/s",
+    "hold kN",
+    "req. BP t",
+    "worst BP t @Tp s",
+    "U_op m/s (kn)",
+    "Fn",
+    "transit h",
+    "% current/wind/waves/tug at U_op",
+)
+
+
+def resistance_table(rows: list) -> tuple:
+    """(columns, rows of strings) of `evaluate` records: the one table of `jaxtow
+    resistance` and the study report."""
+    tonne = 9.80665e3
+    table = []
+    for r in rows:
+        worst = (
+            f"{r['worst_required_bollard_pull'] / tonne:.1f} @{r['worst_tp']:.1f}"
+            if "worst_tp" in r
+            else "-"
+        )
+        if "operating_speed" in r:
+            tot = sum(r["operating_resistance"].values()) or 1.0
+            shares = "/".join(f"{100 * v / tot:.0f}" for v in r["operating_resistance"].values())
+            speed = f"{r['operating_speed']:.2f} ({r['operating_speed'] / 0.514444:.1f})"
+            fn = f"{r['froude']:.3f}"
+            transit = f"{r['transit_time_h']:.0f}" if "transit_time_h" in r else "-"
+        else:
+            shares = speed = fn = transit = "-"
+        table.append(
+            [
+                r["sea_state"],
+                f"{r['hs']:g}",
+                f"{r['tp']:g}",
+                f"{r['wind_speed']:g}",
+                f"{r['hold_towing_force'] / 1e3:.1f}",
+                f"{r['required_bollard_pull'] / tonne:.1f}",
+                worst,
+                speed,
+                fn,
+                transit,
+                shares,
+            ]
+        )
+    return TABLE_COLUMNS, table
