@@ -464,3 +464,21 @@ def test_a_hull_mesh_is_solved_once_and_cached_beside_the_tow_file(tmp_path):
     np.testing.assert_array_equal(np.asarray(again.values), np.asarray(qtf.values))
     with pytest.raises(TowFileError, match="either drift or mesh"):
         jt.tow.loads(text.replace("[hull]", '[hull]\ndrift = "standin"'), source="x", base=tmp_path)
+    # `jaxtow bem TOWFILE` solves the same hull from the same cache and writes the databases
+    main(
+        [
+            "bem",
+            str(f),
+            "--out",
+            str(tmp_path / "bem"),
+            "--quiet",
+            "--cache",
+            str(tmp_path / ".jaxtow_bem" / "box"),
+        ]
+    )
+    db = jt.io.load_qtf(tmp_path / "bem" / "qtf_near_field.nc")
+    np.testing.assert_allclose(np.asarray(db.values), np.asarray(qtf.values), rtol=1e-12, atol=1e-9)
+    plain = tmp_path / "plain.toml"
+    plain.write_text(BARGE2A)
+    with pytest.raises(SystemExit, match=r"no \[hull\] mesh"):
+        main(["bem", str(plain)])

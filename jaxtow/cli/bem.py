@@ -194,8 +194,8 @@ def add_parser(sub):
     )
     r.add_argument(
         "config",
-        help="TOML panel config, or a built-in tow's: barge1, barge2a, barge2b "
-        "(print with --show-config)",
+        help="TOML panel config, a tow file with a [hull] mesh, or a built-in tow's: "
+        "barge1, barge2a, barge2b (print with --show-config)",
     )
     r.add_argument("--out", default="bem_out", help="output folder (default bem_out)")
     r.add_argument("--panel-size", type=float, default=None, help="override [hull] panel_size [m]")
@@ -223,4 +223,41 @@ def _dispatch(args):
             file=sys.stderr,
         )
     args.config = TOW_CONFIGS.get(args.config, args.config)
+    tow_cfg = _tow_file_config(args.config)
+    if tow_cfg is not None:
+        if args.show_config:
+            print(json.dumps(tow_cfg, indent=1))
+            return
+        args.config = tow_cfg
     config_dispatch("bem", BUILTIN, cmd_bem)(args)
+
+
+def _tow_file_config(spec):
+    """The panel config of a tow file whose [hull] has a mesh (None for anything else: a
+    built-in name or a panel config)."""
+    import tomllib
+
+    path = Path(str(spec))
+    if str(spec) in BUILTIN or not path.is_file():
+        return None
+    try:
+        data = tomllib.loads(path.read_text())
+    except (tomllib.TOMLDecodeError, OSError):
+        return None
+    if "vessel" not in data:  # a panel config
+        return None
+    from .tow import load_tow
+
+    tow = load_tow(spec, "bem")
+    mesh = tow.drift_spec
+    if not (isinstance(mesh, dict) and "mesh" in mesh):
+        raise SystemExit(
+            f"jaxtow bem: error: tow file {spec} has no [hull] mesh to solve (its drift comes "
+            f"from {tow.assumed[-1][1] if tow.assumed else 'elsewhere'})"
+        )
+    mass = {} if mesh["cog_z"] is None else {"cog_z": mesh["cog_z"]}
+    return {
+        "hull": {"kind": "file", "path": mesh["mesh"]},
+        "mass": mass,
+        "waves": {"omega": list(mesh["omega"]), "beta_deg": list(mesh["beta_deg"])},
+    }
