@@ -29,6 +29,7 @@ def test_clarke_regressions_by_hand_on_barge2():
     assert not P.clarke_linear_derivatives(200.0, 10.0, 5.0, 0.7)["lb_in_range"]
 
 
+@pytest.mark.slow
 def test_clarke_against_table_3_7_and_the_verdicts():
     """The documented comparison (docs/estimates.md): the regressions give c = -0.044 for
     both hulls (course unstable: they know no skegs), so Barge 2b's straight-behind

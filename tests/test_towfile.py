@@ -58,6 +58,7 @@ def test_builtin_tow_files_reproduce_the_presets(version):
     np.testing.assert_allclose(lam_new, lam_old, rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.slow
 def test_builtin_tow_resistance_equals_the_resistance_config():
     """The tow file's resistance model is the old `jaxtow resistance barge2` config's: the
     same loads at several speeds in both sea states (1e-12)."""
@@ -421,6 +422,7 @@ def test_resistance_takes_a_tow_and_still_reads_the_old_config(capsys):
         inputs("barge1")
 
 
+@pytest.mark.slow
 def test_a_towline_with_weight_is_the_elastic_catenary():
     text = _replace("EA = 2.6e8", "EA = 2.6e8\nweight = 201.2").replace(
         "length_nm = 500.0", "length_nm = 500.0\nwater_depth = 80.0"
