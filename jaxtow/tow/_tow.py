@@ -132,7 +132,7 @@ class Tow:
                 from ..drift._compare import qtf_from_method
                 from ..study import QTF_BETA_DEG, QTF_OMEGA
 
-                q = qtf_from_method(spec, self.waterline, QTF_OMEGA, np_radians(QTF_BETA_DEG))
+                q = qtf_from_method(spec, self.waterline, QTF_OMEGA, _radians(QTF_BETA_DEG))
                 desc = (
                     f"waterline method {spec!r} on the {self.waterline.name} waterline "
                     "(diffraction only, no motion-induced drift)"
@@ -200,7 +200,7 @@ class Tow:
         return show(self)
 
 
-def np_radians(x):
+def _radians(x):
     import numpy as np
 
     return np.radians(x)
