@@ -166,3 +166,20 @@ def test_time_domain_on_the_catenary_wire():
         else:
             assert met["ended_early"] and met["outcome"] != "converged", met
     assert yaw["catenary"] > 75.0 > 55.0 > yaw["elastic"] > 40.0, yaw
+
+
+@pytest.mark.slow
+def test_catenary_parameters_sweep_like_any_other():
+    """l0' and the weight w' are swept by name; a point of the sweep equals the model rebuilt
+    with that value."""
+    sc = jt.presets.barge2_scales()
+    cat = jt.CatenaryTowline.from_si(600.0, WIRE_WEIGHT, 2.6e8, scales=sc, xp=0.5)
+    m = jt.TowModel(vessel=jt.presets.barge_2b(), towline=cat, scales=sc)
+    ds = jt.sweep(m, {"l0": np.linspace(3.0, 8.0, 3), "w": [0.001, 0.005]})
+    one = jt.with_parameters(m, l0=5.5, w=0.005)
+    e = jt.equilibria(one)
+    st = jt.stability(one, e.state)
+    got = ds["max_real"].sel(l0=5.5, w=0.005).where(ds["valid"].sel(l0=5.5, w=0.005))
+    np.testing.assert_allclose(
+        np.sort(got.dropna("equilibrium").values), np.sort(np.asarray(st.max_real)), atol=1e-9
+    )
