@@ -11,6 +11,7 @@ private (a leading underscore) and re-exported here or by its subpackage:
 * ``jaxtow.resistance`` — tow resistance, tug, operating speed;
 * ``jaxtow.continuation`` — branches, bifurcations, limit cycles;
 * ``jaxtow.design`` — towline and bridle design, sensitivities;
+* ``jaxtow.lines`` — the towline catalogue (wire, chain, fibre rope) and composite lines;
 * ``jaxtow.presets`` — the built-in vessels and every documented estimate;
 * ``jaxtow.study``, ``jaxtow.reports`` — the thesis studies and their claims;
 * ``jaxtow.io``, ``jaxtow.plotting``, ``jaxtow.bem``, ``jaxtow.cli`` — files, figures, the
@@ -32,6 +33,7 @@ from . import (
     design as design,
     drift as drift,
     forces as forces,
+    lines as lines,
     presets as presets,
     reports as reports,
     resistance as resistance,
@@ -98,9 +100,11 @@ from ._towline import (
     AbstractTowline as AbstractTowline,
     Bridle as Bridle,
     CatenaryTowline as CatenaryTowline,
+    CompositeTowline as CompositeTowline,
     PowerLawTowline as PowerLawTowline,
     Towline as Towline,
     catenary_span as catenary_span,
+    composite_geometry as composite_geometry,
 )
 from ._units import RHO_SEA as RHO_SEA, G as G, Scales as Scales, froude_number as froude_number
 from ._vessel import VESSEL_PARAMETERS as VESSEL_PARAMETERS, Vessel as Vessel
@@ -155,7 +159,9 @@ __all__ = [
     "AbstractTowline",
     "Bridle",
     "CatenaryTowline",
+    "CompositeTowline",
     "catenary_span",
+    "composite_geometry",
     "PowerLawTowline",
     "Towline",
     "RHO_SEA",

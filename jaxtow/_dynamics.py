@@ -193,8 +193,14 @@ def kinematics(y, xp, yp=0.0) -> Float[Array, "3"]:
 
 
 def vector_field(t, y: Float[Array, "6"], model: TowModel) -> Float[Array, "6"]:
-    """dy/dt' of the tow, thesis eqs 6.1-6.6; signature f(t, y, args) as in diffrax."""
+    """dy/dt' of the tow, thesis eqs 6.1-6.6; signature f(t, y, args) as in diffrax.
+    ``y`` is the state (u', v', r', l', γ, ψ): shape (6,)."""
     y = jnp.asarray(y)
+    if y.shape != (6,):
+        raise ValueError(
+            f"y must be the state (u', v', r', l', gamma, psi) of shape (6,), got shape "
+            f"{y.shape} (vmap the vector field over a batch of states)"
+        )
     fb = force_breakdown(t, y, model)
     return jnp.concatenate(
         [fb.total / fb.inertia, kinematics(y, model.towline.xp, model.towline.yp)]

@@ -119,6 +119,8 @@ _run_jit = jax.jit(_run, static_argnames=("solver", "rtol", "atol", "max_steps")
 
 
 def _save_grid(t0, t1, n_save):
+    if not (np.isfinite(t0) and np.isfinite(t1)):
+        raise ValueError(f"parameters 't0' and 't1' must be finite, got t0 = {t0}, t1 = {t1}")
     if not t1 > t0:
         raise ValueError(f"parameter 't1' must be > t0 = {t0}, got {t1}")
     if n_save < 2:

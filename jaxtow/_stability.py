@@ -15,9 +15,15 @@ import jax.numpy as jnp
 from jaxtyping import Array, Bool, Complex, Float, Int
 
 from ._dynamics import TowModel, vector_field
+from ._rules import guard
 
-STABLE, MARGINAL, UNSTABLE = -1, 0, 1
-STABILITY_LABELS = {STABLE: "stable", MARGINAL: "marginal", UNSTABLE: "unstable"}
+STABLE, MARGINAL, UNSTABLE, INVALID = -1, 0, 1, 2
+STABILITY_LABELS = {
+    STABLE: "stable",
+    MARGINAL: "marginal",
+    UNSTABLE: "unstable",
+    INVALID: "invalid (NaN eigenvalues)",
+}
 #: The one stability tolerance of jaxtow (non-dimensional, per L/U_tug): |max Re λ| at or
 #: below it counts as marginal. Every verdict (maps, reports, design, the command line) uses
 #: `classify` with this value.
@@ -45,7 +51,7 @@ def eigenvalues(
     tow Jacobians; slower than LAPACK on CPU). When only max Re λ is wanted,
     `spectral_abscissa` is faster than both.
     """
-    return matrix_eigenvalues(jacobian(model, y), method)
+    return guard(matrix_eigenvalues(jacobian(model, y), method), model.checks())
 
 
 def matrix_eigenvalues(A: Float[Array, "n n"], method: str = "lapack") -> Complex[Array, " n"]:
@@ -73,7 +79,7 @@ def max_real_eigenvalue(
 ) -> Float[Array, ""]:
     """max Re λ(∂f/∂y) at y: < 0 stable, > 0 unstable (thesis figs 2.6b, 6.4); ``method``:
     see `matrix_max_real_eigenvalue`."""
-    return matrix_max_real_eigenvalue(jacobian(model, y), method)
+    return guard(matrix_max_real_eigenvalue(jacobian(model, y), method), model.checks())
 
 
 #: Bisection steps of `spectral_abscissa`: the bracket [−R, R] (R a bound on |λ|) shrinks
@@ -166,9 +172,11 @@ def _spectral_abscissa_jvp(primals, tangents):
 
 def classify(max_re, tol: float = STABILITY_TOL) -> Int[Array, "..."]:
     """The stability rule: −1 stable (max Re λ < −tol), 0 marginal, +1 unstable
-    (max Re λ > tol); see `STABILITY_LABELS`."""
+    (max Re λ > tol), 2 invalid (max Re λ is NaN: no verdict; never "marginal"); see
+    `STABILITY_LABELS`."""
     max_re = jnp.asarray(max_re)
-    return jnp.where(max_re < -tol, STABLE, jnp.where(max_re > tol, UNSTABLE, MARGINAL))
+    code = jnp.where(max_re < -tol, STABLE, jnp.where(max_re > tol, UNSTABLE, MARGINAL))
+    return jnp.where(jnp.isnan(max_re), INVALID, code)
 
 
 def hessenberg(A: Float[Array, "n n"]) -> Float[Array, "n n"]:

@@ -295,3 +295,240 @@ class CatenaryTowline(AbstractTowline):
         ``end_depth`` below the surface, plus the sag), by L; ok where it is positive."""
         c = water_depth - end_depth - self.sag(l)
         return c, c > 0
+
+
+# ------------------------------------------------------------------ composite lines in series
+
+
+def _dasinh(a, d):
+    """(asinh(a) − asinh(a − d)) / d for d ≥ 0, exact as d → 0 (the midpoint rule there,
+    error O(d²), below 1e-12 where it is used)."""
+    small = d < 1e-5
+    safe = jnp.where(small, 1.0, d)
+    mid = a - 0.5 * d
+    return jnp.where(
+        small, 1.0 / jnp.sqrt(1.0 + mid**2), (jnp.arcsinh(a) - jnp.arcsinh(a - safe)) / safe
+    )
+
+
+def composite_geometry(H, V0, lengths, EA, w):
+    """Span and height of each segment of an elastic catenary in series (Irvine 1981, eq.
+    2.15 per segment), walking from the hawser to the tug: horizontal tension ``H`` > 0,
+    vertical tension ``V0`` at the hawser (the weight it carries), segments of unstretched
+    ``lengths``, axial stiffness ``EA`` and submerged weight per unit length ``w`` ≥ 0.
+
+    Returns (dx, dz, V_start, V_end) per segment; dz is the rise (negative: the line goes
+    down while V > 0). A weightless segment is a straight elastic line."""
+    W = w * lengths
+    V_end = V0 - jnp.cumsum(W)
+    V_start = V_end + W
+    T_s = jnp.sqrt(H**2 + V_start**2)
+    T_e = jnp.sqrt(H**2 + V_end**2)
+    dx = H * lengths / EA + lengths * _dasinh(V_start / H, W / H)
+    # (T_s − T_e)/w written as (V_s + V_e) L / (T_s + T_e): finite as w → 0
+    dz = -((V_start + V_end) * lengths / (2.0 * EA) + (V_start + V_end) * lengths / (T_s + T_e))
+    return dx, dz, V_start, V_end
+
+
+def _bracketed_newton(fg, a, b, x0, maxiter=200):
+    """The root of an increasing ``fg(x) = (f, f')`` in [a, b] (f(a) ≤ 0 ≤ f(b)): Newton's
+    steps, a bisection wherever a step would leave the shrinking bracket (so it converges
+    like bisection at worst and quadratically near the root); stops at a step below 1e-14
+    relative."""
+
+    def cond(c):
+        x, a, b, dx, k = c
+        return (jnp.abs(dx) > 1e-14 * (1.0 + jnp.abs(x))) & (k < maxiter)
+
+    def body(c):
+        x, a, b, _, k = c
+        f, d = fg(x)
+        a = jnp.where(f < 0, x, a)
+        b = jnp.where(f > 0, x, b)
+        xn = x - f / jnp.where(d > 0, d, 1.0)
+        xn = jnp.where((d > 0) & (xn > a) & (xn < b), xn, 0.5 * (a + b))
+        xn = jnp.where(f == 0, x, xn)
+        return xn, a, b, xn - x, k + 1
+
+    return jax.lax.while_loop(cond, body, (x0, a, b, b - a, 0))[0]
+
+
+def _hawser_share(H, lengths, EA, w):
+    """V0 ∈ [0, total weight] with both ends at the same height at horizontal tension H."""
+    Wt = jnp.sum(w * lengths)
+
+    def fg(V0):
+        z, dz = jax.jvp(
+            lambda v: jnp.sum(composite_geometry(H, v, lengths, EA, w)[1]), (V0,), (1.0,)
+        )
+        return -z, -dz
+
+    return _bracketed_newton(fg, jnp.zeros_like(Wt), Wt, 0.5 * Wt)
+
+
+def _composite_solve(l, lengths, EA, w):
+    """(H, V0) of the composite line with span ``l`` and both ends at the same height:
+    bracketed Newton on log H (the span grows with H) around a bracketed Newton on V0 ∈
+    [0, total weight] (the height difference falls as the hawser carries more); the span's
+    derivative in log H eliminates V0 by the implicit function theorem. (0, 0) where slack."""
+    Wt = jnp.sum(w * lengths)
+    l0 = jnp.sum(lengths)
+
+    def residual(H, V0):
+        dx, dz, _, _ = composite_geometry(H, V0, lengths, EA, w)
+        return jnp.stack([jnp.sum(dx), jnp.sum(dz)])
+
+    def span_and_slope(x):
+        H = jnp.exp(x)
+        V0 = _hawser_share(H, lengths, EA, w)
+        r = residual(H, V0)
+        JH, JV = jax.jacfwd(residual, argnums=(0, 1))(H, V0)
+        # dX/dH along Z = 0: X_H − X_V Z_H / Z_V (Z_V > 0 unless the line is weightless)
+        ZV = jnp.where(JV[1] != 0, JV[1], 1.0)
+        dX = JH[0] - jnp.where(JV[1] != 0, JV[0] * JH[1] / ZV, 0.0)
+        return r[0] - l, H * dX
+
+    hi = jnp.log(jnp.maximum(l, l0) / jnp.sum(lengths / EA) + Wt)
+    lo = hi - _CATENARY_LOG_SPAN
+    taut = (l > 0) & (span_and_slope(lo)[0] < 0)
+    x = _bracketed_newton(span_and_slope, lo, hi, hi - 0.5 * _CATENARY_LOG_SPAN)
+    H = jnp.where(taut, jnp.exp(x), 0.0)
+    V0 = jnp.where(taut, _hawser_share(jnp.where(taut, H, 1.0), lengths, EA, w), 0.0)
+    return H, V0
+
+
+@jax.custom_jvp
+def _composite_tension(l, lengths, EA, w):
+    return _composite_solve(l, lengths, EA, w)
+
+
+@_composite_tension.defjvp
+def _composite_tension_jvp(primals, tangents):
+    l, lengths, EA, w = primals
+    H, V0 = _composite_tension(l, lengths, EA, w)
+    taut = H > 0
+    Hs = jnp.where(taut, H, 1.0)
+
+    def residual(H, V0, lengths, EA, w):
+        dx, dz, _, _ = composite_geometry(H, V0, lengths, EA, w)
+        return jnp.stack([jnp.sum(dx), jnp.sum(dz)])
+
+    # F(H, V0; θ) = (X − l, Z) = 0  =>  J d(H, V0) = (dl, 0) − F_θ dθ
+    J = jax.jacfwd(residual, argnums=(0, 1))(Hs, V0, lengths, EA, w)
+    J = jnp.stack(J, axis=-1)
+    dl, dlen, dEA, dw = tangents
+    _, F_p = jax.jvp(lambda a, b, c: residual(Hs, V0, a, b, c), (lengths, EA, w), (dlen, dEA, dw))
+    rhs = jnp.stack([dl, jnp.zeros_like(dl)]) - F_p
+    d = jnp.linalg.solve(jnp.where(taut, J, jnp.eye(2)), rhs)
+    return (H, V0), (jnp.where(taut, d[0], 0.0), jnp.where(taut, d[1], 0.0))
+
+
+class CompositeTowline(AbstractTowline):
+    """Segments of different lines in series (e.g. a steel wire with a chain pennant at the
+    hawser, or with a nylon stretcher): each an elastic catenary (Irvine 1981) with its own
+    stiffness and weight, both ends at the same height, solved for the horizontal tension
+    H' and the weight the hawser carries (`composite_geometry`). With no weight it is the
+    elastic line of the series stiffness l0'/Σ(l0_i'/EA_i'); with one segment it is
+    `CatenaryTowline` (which keeps its one-dimensional solve, many times cheaper).
+
+    ``l0``: total unstretched length (by L); ``share``: each segment's fraction of it, from
+    the hawser to the tug (a sweep of l0 scales every segment); ``EA``, ``w``: per segment,
+    on the scales of `CatenaryTowline`. Build from SI with `from_si` or from the catalogue
+    (`jaxtow.lines`).
+    """
+
+    l0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
+    xp: Float[Array, ""] = V.rule_field(rule=XP_RULE)
+    share: Float[Array, " n"] = V.rule_field(rule=V.POSITIVE)
+    EA: Float[Array, " n"] = V.rule_field(rule=V.POSITIVE)
+    w: Float[Array, " n"] = V.rule_field(rule=V.NONNEGATIVE)
+    yp: Float[Array, ""] = V.rule_field(rule=YP_RULE, default=0.0)
+
+    def __check_init__(self):
+        shapes = {jnp.shape(self.share)[-1:], jnp.shape(self.EA)[-1:], jnp.shape(self.w)[-1:]}
+        if len(shapes) != 1 or jnp.ndim(self.share) == 0:
+            raise ValueError(
+                "share, EA and w must be arrays of one length (one entry per segment), "
+                f"got shapes {jnp.shape(self.share)}, {jnp.shape(self.EA)}, {jnp.shape(self.w)}"
+            )
+        total = jnp.sum(self.share, axis=-1)
+        try:
+            ok = bool(jnp.all(jnp.abs(total - 1.0) < 1e-9))
+        except (jax.errors.ConcretizationTypeError, jax.errors.TracerBoolConversionError):
+            ok = True  # traced (under jit or vmap): checked where it was built
+        if not ok:
+            raise ValueError(f"share must sum to 1 (the segments' fractions of l0), got {total}")
+
+    @classmethod
+    def from_si(cls, lengths, weights, EAs, *, scales, xp, yp=0.0):
+        """From segment ``lengths`` [m], submerged ``weights`` [N/m] and ``EAs`` [N], from
+        the hawser to the tug, on the tow of ``scales``; ``xp``, ``yp`` by L."""
+        F, L = scales.force, scales.length
+        lengths = jnp.asarray(lengths, float)
+        total = jnp.sum(lengths)
+        return cls(
+            l0=total / L,
+            xp=xp,
+            share=lengths / total,
+            EA=jnp.asarray(EAs, float) / F,
+            w=jnp.asarray(weights, float) * L / F,
+            yp=yp,
+        )
+
+    @property
+    def series_EA(self):
+        """The series stiffness l0'/Σ(l0_i'/EA_i') (the elastic line's EA' of the same
+        stretch)."""
+        return self.l0 / jnp.sum(self.lengths / self.EA, axis=-1)
+
+    @property
+    def lengths(self):
+        """Unstretched segment lengths l0_i' (by L)."""
+        return self.l0 * self.share
+
+    def _solve(self, l):
+        return _composite_tension(jnp.asarray(l, float), self.lengths, self.EA, self.w)
+
+    def tension(self, l):
+        return self._solve(l)[0]
+
+    def length_at_tension(self, T):
+        T = jnp.asarray(T, float)
+        V0 = _hawser_share(T, self.lengths, self.EA, self.w)
+        return jnp.sum(composite_geometry(T, V0, self.lengths, self.EA, self.w)[0])
+
+    def rescaled(self, factor):
+        return eqx.tree_at(lambda t: (t.EA, t.w), self, (self.EA * factor, self.w * factor))
+
+    def stiffness(self, l):
+        """Effective stiffness dH'/dl' at span l' (autodiff of the implicit solve)."""
+        return jax.grad(self.tension)(jnp.asarray(l, float))
+
+    def end_tensions(self, l):
+        """(hawser, tug) tensions √(H'² + V'²) at the two ends."""
+        H, V0 = self._solve(l)
+        Wt = jnp.sum(self.w * self.lengths)
+        return jnp.sqrt(H**2 + V0**2), jnp.sqrt(H**2 + (V0 - Wt) ** 2)
+
+    def end_tension(self, l):
+        """The larger of the two end tensions."""
+        return jnp.maximum(*self.end_tensions(l))
+
+    def sag(self, l):
+        """Depth of the lowest point below the ends, by L (where the vertical tension
+        changes sign, inside the segment that carries it)."""
+        H, V0 = self._solve(l)
+        Hs = jnp.where(H > 0, H, 1.0)
+        dx, dz, Vs, Ve = composite_geometry(Hs, V0, self.lengths, self.EA, self.w)
+        z_start = jnp.cumsum(dz) - dz
+        # within a segment with Vs ≥ 0 ≥ Ve: the part of length Vs/w down to V = 0
+        inside = (Vs >= 0) & (Ve <= 0) & (self.w > 0)
+        part = jnp.where(inside, Vs / jnp.where(self.w > 0, self.w, 1.0), 0.0)
+        _, dz_part, _, _ = composite_geometry(Hs, Vs, part, self.EA, self.w)
+        z_low = jnp.min(jnp.concatenate([z_start, (z_start + dz_part)[None, ...].ravel()]))
+        return jnp.where(H > 0, -z_low, 0.0)
+
+    def seabed_clearance(self, l, water_depth, end_depth=0.0):
+        """(clearance, ok) as `CatenaryTowline.seabed_clearance`."""
+        c = water_depth - end_depth - self.sag(l)
+        return c, c > 0

@@ -34,7 +34,7 @@ import optimistix as optx
 
 from ._dynamics import TowModel
 from ._equilibrium import _state_from_heading, heading_residual
-from ._parameters import get_parameter, with_parameters
+from ._parameters import check_values, get_parameter, with_parameters
 from ._roots import newton
 from ._stability import STABLE, classify, eigenvalues, max_real_eigenvalue
 from ._vessel import VESSEL_PARAMETERS
@@ -188,7 +188,7 @@ class DesignResult:
         return design_dataset(self)
 
 
-def _check_bounds(variables, bounds):
+def _check_bounds(variables, bounds, model=None):
     out = {}
     for v in variables:
         if v not in bounds:
@@ -198,6 +198,11 @@ def _check_bounds(variables, bounds):
             raise ValueError(
                 f"parameter 'bounds': range of {v!r} must have lo < hi, got {(lo, hi)}"
             )
+        if model is not None:  # the range must lie inside the parameter's own rule
+            try:
+                check_values(model, v, np.array([lo, hi]))
+            except ValueError as e:
+                raise ValueError(f"parameter 'bounds': range of {v!r}: {e}") from None
         out[v] = (lo, hi)
     return out
 
@@ -244,7 +249,7 @@ def optimise_towline(
     if aggregate not in ("worst", "mean"):
         raise ValueError(f"parameter 'aggregate' must be 'worst' or 'mean', got {aggregate!r}")
     variables = tuple(variables)
-    box = _check_bounds(variables, {**DESIGN_BOUNDS, **(bounds or {})})
+    box = _check_bounds(variables, {**DESIGN_BOUNDS, **(bounds or {})}, model)
     models, scales = _scenarios(model, scenarios, ea_scales)
     opts = dict(
         aggregate=aggregate,
@@ -302,6 +307,8 @@ def grid_search(
     ``grid`` (dict name → 1-D values), evaluated in vmapped batches (no Python loop over
     the grid); returns the best grid point."""
     names = tuple(grid)
+    for n in names:  # the grid inside each parameter's rule (the sweeps' eager check)
+        check_values(model, n, np.asarray(grid[n], float))
     axes = [jnp.asarray(grid[n], float) for n in names]
     mesh = jnp.stack([g.ravel() for g in jnp.meshgrid(*axes, indexing="ij")], axis=-1)
     models, scales = _scenarios(model, scenarios, ea_scales)
@@ -361,7 +368,8 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
         f
         for f in getattr(model.towline, "__dataclass_fields__", {})
         if isinstance(getattr(model.towline, f), jax.Array)
-    )
+        and jnp.ndim(getattr(model.towline, f)) == 0
+    )  # scalar fields (a composite line's per-segment arrays are not swept by name)
     ext = tuple(f"external.{f}" for f in _external_parameters(model))
     tug = ("u_tug",) if model.reference_scales is not None else ()
     names = (
@@ -384,6 +392,7 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
     if len(sweep) != 1:
         raise ValueError("parameter 'sweep' must name exactly one parameter")
     ((sname, svals),) = sweep.items()
+    check_values(model, sname, np.asarray(svals, float))
     svals = jnp.asarray(svals, float)
     x, g, a = jax.jit(jax.vmap(lambda s: one(with_parameters(model, **{sname: s}))))(svals)
     return names, np.asarray(x), np.asarray(g), np.asarray(a), (sname, np.asarray(svals))

@@ -68,3 +68,81 @@ EA = 2.6e8
     assert out["2b"][0] == pytest.approx(out["2a"][0], rel=0.02)
     assert out["2b"][1][1] > 0  # 2b's straight-behind equilibrium: unstable on the regression
     assert float(P.barge_2b().stability_coefficient()) > 0  # ... stable on the measured table
+
+
+def test_kijima_regressions_by_hand_on_barge2():
+    """Kijima et al. (1990), k = 2T/L, already on the Hong et al. scales; Y_r' carries the
+    surge added mass (their Y_r' − m_x' = πk/4)."""
+    L, B, T, cb = 76.2, 24.4, 5.0, 0.928
+    k = 2 * T / L
+    d = P.kijima_linear_derivatives(L, B, T, cb, a11=0.03)
+    assert d["Yv"] == pytest.approx(-(math.pi * k / 2 + 1.4 * cb * B / L), rel=1e-12)
+    assert d["Yr"] == pytest.approx(math.pi * k / 4 + 0.03, rel=1e-12)
+    assert d["Nv"] == pytest.approx(-k, rel=1e-12)
+    assert d["Nr"] == pytest.approx(-0.54 * k + k * k, rel=1e-12)
+
+
+def test_particulars_estimate_every_parameter():
+    vals, notes = P.particulars_derivatives(76.2, 24.4, 5.0, 0.928, "kijima")
+    assert set(jt.VESSEL_PARAMETERS) | {"a11", "a22", "a66"} <= set(vals)
+    assert vals["m"] == pytest.approx(2 * 0.928 * 24.4 / 76.2, rel=1e-12)
+    assert vals["Izz"] == pytest.approx(vals["m"] * 0.25**2, rel=1e-12)
+    assert vals["Yvvv"] == float(P.barge_2a().Yvvv) and "Barge 2a" in notes["Yvvv"]
+    assert "Kijima" in notes["Nr"]
+    v = P.vessel_from_particulars(76.2, 24.4, 5.0, 0.928, "kijima")
+    assert float(v.Nr) == vals["Nr"] and dict(v.assumed)["Yvvv"] == notes["Yvvv"]
+    with pytest.raises(ValueError, match="regression"):
+        P.particulars_derivatives(76.2, 24.4, 5.0, 0.928, "holtrop")
+    with pytest.raises(ValueError, match="block_coefficient"):
+        P.particulars_derivatives(76.2, 24.4, 5.0, 1.4)
+
+
+def _particulars_tow(regression, extra=""):
+    return jt.tow.loads(
+        f"""[tow]
+name = "est"
+[vessel]
+length = 76.2
+breadth = 24.4
+draft = 5.0
+block_coefficient = 0.928
+regression = "{regression}"
+{extra}
+[towline]
+l0 = 2.5
+xp = 0.5
+EA = 2.6e8
+""",
+        source="particulars",
+    )
+
+
+def test_a_tow_file_from_particulars_alone():
+    t = _particulars_tow("kijima")
+    vals, _ = P.particulars_derivatives(76.2, 24.4, 5.0, 0.928, "kijima")
+    for k in jt.VESSEL_PARAMETERS:
+        assert float(getattr(t.vessel, k)) == pytest.approx(vals[k], rel=1e-12)
+    assumed = dict(t.assumed)
+    assert all(k in assumed for k in ("m", "Izz", "Yv", "Yvvv", "R0", "a22"))
+    with pytest.raises(jt.tow.TowFileError, match="regression"):
+        _particulars_tow("holtrop")
+
+
+@pytest.mark.slow
+def test_particulars_vessels_on_barge2_and_their_verdicts():
+    """The documented comparison (docs/estimates.md): Barge 2 from its particulars alone on
+    the 2.5 L wire. Both regressions call the hull course unstable (Clarke c = -0.044,
+    Kijima c = -0.027) and its straight tow unstable, like the measured 2a and unlike 2b."""
+    out = {}
+    for reg in ("clarke", "kijima"):
+        t = _particulars_tow(reg)
+        m = t.model()
+        e = jt.equilibria(m)
+        st = jt.stability(m, e.state)
+        k = int(np.argmin(np.abs(np.asarray(e.psi))))
+        out[reg] = (float(t.vessel.stability_coefficient()), float(st.max_real[k]), len(e.psi))
+    assert out["clarke"][0] == pytest.approx(-0.0442, abs=5e-4)
+    assert out["kijima"][0] == pytest.approx(-0.0272, abs=5e-4)
+    assert out["clarke"][1] == pytest.approx(0.212, abs=2e-3)
+    assert out["kijima"][1] == pytest.approx(0.136, abs=2e-3)
+    assert out["clarke"][2] == out["kijima"][2] == 1  # Barge 2a's cubic terms: no side equilibria

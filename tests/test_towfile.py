@@ -203,6 +203,42 @@ BAD = [
     ),
     ("not TOML", _replace("l0 = 2.5", "l0 = = 2.5"), "", "any"),
     ("no tow name", _replace('name = "barge2a"', ""), "tow.name", "section"),
+    (
+        "unknown catalogue line",
+        _replace("EA = 2.6e8", 'line = "hemp"\ndiameter_mm = 76'),
+        "towline.line",
+        "key",
+    ),
+    (
+        "line diameter in metres",
+        _replace("EA = 2.6e8", 'line = "wire"\ndiameter_mm = 0.076'),
+        "towline.diameter_mm",
+        "key",
+    ),
+    (
+        "segments and l0",
+        _replace("EA = 2.6e8", 'segments = [{line = "wire", diameter_mm = 76, length = 9}]'),
+        "towline.l0",
+        "key",
+    ),
+    (
+        "one segment",
+        _replace("l0 = 2.5", "length = 1.0")
+        .replace("length = 1.0", "")
+        .replace("EA = 2.6e8", 'segments = [{line = "wire", diameter_mm = 76, length = 9}]'),
+        "towline.segments",
+        "key",
+    ),
+    (
+        "segment without length",
+        _replace("l0 = 2.5", "").replace(
+            "EA = 2.6e8",
+            'segments = [{line = "wire", diameter_mm = 76}, {line = "chain", diameter_mm = 76, '
+            "length = 9}]",
+        ),
+        "towline.segments",
+        "key",
+    ),
 ]
 
 
@@ -484,3 +520,61 @@ def test_a_hull_mesh_is_solved_once_and_cached_beside_the_tow_file(tmp_path):
     plain.write_text(BARGE2A)
     with pytest.raises(SystemExit, match=r"no \[hull\] mesh"):
         main(["bem", str(plain)])
+
+
+def test_towline_from_the_catalogue_and_a_composite_line():
+    """[towline] line + diameter_mm: the catalogue's EA and weight (an elastic catenary);
+    an EA given is a certificate's and replaces the catalogue's. segments: a composite line
+    in series; the study reports each segment and the weakest one's MBL."""
+    from jaxtow import lines
+
+    text = _replace("l0 = 2.5", "length = 600.0").replace(
+        "EA = 2.6e8", 'line = "wire"\ndiameter_mm = 76'
+    )
+    tow = jt.tow.loads(text, source="line.toml")
+    w = lines.wire_rope(0.076)
+    _leaves_equal(tow.towline, w.towline(600.0, scales=tow.scales, xp=0.5))
+    assert tow.line_info[0]["mbl_kN"] == pytest.approx(w.mbl / 1e3)
+    assert "OrcaFlex" in dict(tow.assumed)["towline"]
+    cert = jt.tow.loads(
+        text.replace("diameter_mm = 76", "diameter_mm = 76\nEA = 2.6e8"), source="c"
+    )
+    assert float(cert.towline.EA) == pytest.approx(2.6e8 / tow.scales.force)
+    assert "EA given" in cert.line_info[0]["source"]
+
+    comp = _replace("l0 = 2.5", "").replace(
+        "EA = 2.6e8",
+        'segments = [{line = "chain", diameter_mm = 76, length = 50}, '
+        '{line = "wire", diameter_mm = 64, length = 550}]',
+    )
+    tow = jt.tow.loads(comp, source="comp.toml")
+    ref = lines.composite(
+        [(lines.chain(0.076), 50.0), (lines.wire_rope(0.064), 550.0)], scales=tow.scales, xp=0.5
+    )
+    _leaves_equal(tow.towline, ref)
+    assert [s["length_m"] for s in tow.line_info] == [50.0, 550.0]
+    shown = jt.tow.loads(jt.tow.show(tow), source="shown")
+    _leaves_equal(shown.towline, tow.towline)
+    from jaxtow.reports._tow import _strength_record
+
+    summary = {"calm": {"equilibria": [{"tension": 0.5, "valid": True}]}}
+    rec = _strength_record(tow, tow.model(), summary)
+    assert rec["weakest"] == lines.wire_rope(0.064).name
+    end = float(tow.towline.end_tension(tow.towline.length_at_tension(0.5)))
+    assert rec["utilisation"] == pytest.approx(end * tow.scales.force / lines.wire_rope(0.064).mbl)
+
+
+def test_a_wind_table_file_in_a_tow_file(tmp_path):
+    """[hull] wind_table = a CSV (angle_deg, cx, cy, cn over 0…180°), read by the one reader
+    (`jaxtow.io.read_coefficient_table`) that `jaxtow resistance` configs use too."""
+    t = jt.presets.BARGE2_WIND_TABLE
+    rows = np.column_stack([t["angle_deg"], t["cx"], t["cy"], t["cn"]])
+    np.savetxt(tmp_path / "wind.csv", rows, delimiter=",", header="angle_deg, cx, cy, cn")
+    text = _replace("[hull]", '[hull]\nwind_table = "wind.csv"')
+    tow = jt.tow.loads(text, source="w.toml", base=tmp_path)
+    ref = jt.presets.barge2_wind_table()
+    for a in (0.0, 0.7, 2.0, -1.1):
+        np.testing.assert_allclose(tow.wind_table(a), ref(a), rtol=1e-12)
+    np.savetxt(tmp_path / "bad.csv", rows[:, :3], delimiter=",")
+    with pytest.raises(TowFileError, match=r"key hull\.wind_table: .*expected 4 columns"):
+        jt.tow.loads(text.replace("wind.csv", "bad.csv"), source="w.toml", base=tmp_path)

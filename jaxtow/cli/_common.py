@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import argparse
 import math
 from pathlib import Path
 
@@ -188,3 +189,25 @@ def _time_domain_options(p, t1_default=400.0):
     )
     p.add_argument("--n-save", type=int, default=4001, help="saved samples")
     p.add_argument("--solver", default="auto", choices=("auto", "tsit5", "kvaerno5"))
+
+
+def positive_int(text: str) -> int:
+    """argparse type: a whole number >= 1 (the message names the value)."""
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a whole number >= 1, got {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number >= 1, got {n}")
+    return n
+
+
+def positive_float(text: str) -> float:
+    """argparse type: a finite number > 0."""
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}") from None
+    if not (math.isfinite(x) and x > 0):
+        raise argparse.ArgumentTypeError(f"expected a finite number > 0, got {text}")
+    return x

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from .._units import RHO_SEA, G
+from ._common import positive_int
 from ._config import config_dispatch, read_config as _read_config
 
 BUILTIN = {"barge1": "bem_barge1.toml", "barge2": "bem_barge2.toml"}
@@ -199,7 +200,9 @@ def add_parser(sub):
     )
     r.add_argument("--out", default="bem_out", help="output folder (default bem_out)")
     r.add_argument("--panel-size", type=float, default=None, help="override [hull] panel_size [m]")
-    r.add_argument("--n-omega", type=int, default=None, help="override the number of frequencies")
+    r.add_argument(
+        "--n-omega", type=positive_int, default=None, help="override the number of frequencies"
+    )
     r.add_argument("--cache", default=None, help="per-frequency cache folder (default OUT/cache)")
     r.add_argument(
         "--convergence", default=None, help="mesh study instead: comma-separated panel sizes [m]"

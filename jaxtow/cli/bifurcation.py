@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._common import _model, _tow_option
+from ._common import _model, _tow_option, positive_float
 
 
 def cmd_bifurcation(args):
@@ -130,7 +130,7 @@ def add_parser(sub):
     b.add_argument("--range", nargs=2, type=float, default=(0.0, 1.0), metavar=("LO", "HI"))
     b.add_argument("--xp", type=float, default=0.5, help="x_p' when not the continuation parameter")
     b.add_argument("--l0", type=float, default=0.5, help="l0' when not the continuation parameter")
-    b.add_argument("--ds", type=float, default=0.01, help="initial arclength step")
+    b.add_argument("--ds", type=positive_float, default=0.01, help="initial arclength step")
     b.add_argument(
         "--cycles", type=int, default=0, help="limit cycles to continue across the unstable range"
     )

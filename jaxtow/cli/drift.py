@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._common import _tow_option
+from ._common import _tow_option, positive_int
 
 SWAY_METHODS = ("faltinsen", "liu", "fujii_takahashi", "kuroda", "kashiwagi")
 
@@ -236,7 +236,10 @@ def add_parser(sub):
         "--omega-max", type=float, default=2.1, help="highest wave frequency [rad/s] (default 2.1)"
     )
     d.add_argument(
-        "--n-omega", type=int, default=191, help="frequencies from 0.2 rad/s to --omega-max"
+        "--n-omega",
+        type=positive_int,
+        default=191,
+        help="frequencies from 0.2 rad/s to --omega-max",
     )
     d.add_argument("--out", default="results/drift", help="output folder")
     d.set_defaults(func=cmd_drift)

@@ -41,7 +41,7 @@ def cmd_map(args):
         save(plot_max_real_vs(ds, names[0]), out / f"{stem}_max_real.png")
     elif len(names) == 2:
         save(plot_stability_map(ds, names[0], names[1]), out / f"{stem}_map.png")
-    n_unstable = int(((ds["stability"] > 0) & ds["valid"]).sum())
+    n_unstable = int(((ds["stability"] == 1) & ds["valid"]).sum())
     print(f"{ds.sizes}: {n_unstable} unstable equilibria; wrote {out / (stem + '.nc')}")
 
 

@@ -50,17 +50,6 @@ def _unknown(section: str, got: dict, allowed: set):
         )
 
 
-def _wind_table(path):
-    from ..resistance._flow import CoefficientTable
-
-    t = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
-    if t.shape[1] != 4:
-        raise ValueError(f"wind_table {path!r}: expected 4 columns angle_deg, cx, cy, cn")
-    return CoefficientTable.symmetric(
-        t[:, 0], t[:, 1], t[:, 2], t[:, 3], label=f"wind table {path}"
-    )
-
-
 def build(cfg: dict):
     """(tow, tug, sea states, heading [rad], route length [m] or None) from a parsed config."""
     from .. import presets, resistance as R
@@ -73,6 +62,11 @@ def build(cfg: dict):
                 if key != "sea_state"
                 else "config: needs at least one [[sea_state]]"
             )
+    unknown = set(cfg) - {"tow", "tug", "sea_state", "route"}
+    if unknown:
+        raise ValueError(
+            f"config: unknown section(s) {sorted(unknown)}; known: tow, tug, sea_state, route"
+        )
     tow_c, tug_c = cfg["tow"], cfg["tug"]
     _unknown("tow", tow_c, _TOW_KEYS)
     _unknown("tug", tug_c, _TUG_KEYS)
@@ -91,7 +85,9 @@ def build(cfg: dict):
         kw["qtf"], kw["drift_source"] = drift_source(drift)
         kw["form"] = tow_c.get("sailing_form", "aranha")
     if "wind_table" in tow_c:
-        kw["wind_table"] = _wind_table(tow_c["wind_table"])
+        from ..io.resistance import read_coefficient_table
+
+        kw["wind_table"] = read_coefficient_table(tow_c["wind_table"])
     tow = presets.barge2_resistance(vessel.split("_")[1], **kw)
     eff = dict(
         efficiency=tug_c.get("efficiency", 1.0),
@@ -122,7 +118,10 @@ def build(cfg: dict):
             raise ValueError(f"config [[sea_state]] {i + 1}: hs and tp are required")
         seas.append(R.SeaState(**kw, name=s.get("name", f"sea state {i + 1}")))
     route = cfg.get("route", {})
+    _unknown("route", route, {"length_nm", "length_m"})
     length = route["length_nm"] * NM if "length_nm" in route else route.get("length_m")
+    if length is not None and not (math.isfinite(length) and length > 0):
+        raise ValueError(f"config [route]: the route length must be > 0, got {length!r} m")
     return tow, tug, seas, math.radians(tow_c.get("heading_deg", 0.0)), length
 
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Callable
 
 import jax
@@ -11,7 +12,7 @@ import numpy as np
 
 from .._dynamics import TowModel, vector_field
 from .._equilibrium import _state_from_heading, heading_residual
-from .._parameters import get_parameter
+from .._parameters import check_values, get_parameter
 from .._stability import STABLE, classify, jacobian, matrix_eigenvalues
 from ._curve import _Curve, _setter
 from ._hopf import hopf_test
@@ -202,6 +203,13 @@ def equilibrium_branch(
     lo, hi = (float(v) for v in p_range)
     if not lo < hi:
         raise ValueError(f"parameter 'p_range' must be increasing, got {p_range}")
+    if not (math.isfinite(ds) and ds > 0):
+        raise ValueError(f"parameter 'ds' must be > 0 and finite, got {ds!r}")
+    if not callable(parameter):  # the range inside the parameter's own rule
+        try:
+            check_values(model, parameter, np.array([lo, hi]))
+        except ValueError as e:
+            raise ValueError(f"parameter 'p_range': {e}") from None
     if not lo <= p0 <= hi:
         raise ValueError(f"parameter 'p0' = {p0} lies outside p_range {p_range}")
     psi_lim = float(model.psi_max if psi_max is None else psi_max)

@@ -87,6 +87,9 @@ class IrregularWaveDriftForce(AbstractExternalForce):
 
     def __check_init__(self):
         check_form(self.form)
+        from ..waves._spectra import check_ascending
+
+        check_ascending(self.omega)
 
     def dimensional(self, y):
         U, L = self.scales.u_tug, self.scales.length

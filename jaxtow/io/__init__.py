@@ -7,7 +7,10 @@ from .dataset import (
 )
 from .design import design_dataset as design_dataset, sensitivity_dataset as sensitivity_dataset
 from .drift_methods import drift_methods_dataset as drift_methods_dataset
-from .resistance import resistance_dataset as resistance_dataset
+from .resistance import (
+    read_coefficient_table as read_coefficient_table,
+    resistance_dataset as resistance_dataset,
+)
 from .wamit import (
     complete_table as complete_table,
     load_qtf as load_qtf,
@@ -30,6 +33,7 @@ __all__ = [
     "sensitivity_dataset",
     "drift_methods_dataset",
     "resistance_dataset",
+    "read_coefficient_table",
     "complete_table",
     "load_qtf",
     "qtf_from_capytaine",

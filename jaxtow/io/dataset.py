@@ -28,7 +28,7 @@ VARIABLES = {
     "eig_real": ("1", "real part of Jacobian eigenvalues (by U_tug/L)"),
     "eig_imag": ("1", "imaginary part of Jacobian eigenvalues (by U_tug/L)"),
     "max_real": ("1", "max real part of the eigenvalues (by U_tug/L); > 0 unstable"),
-    "stability": ("1", "-1 stable, 0 marginal, +1 unstable"),
+    "stability": ("1", "-1 stable, 0 marginal, +1 unstable, 2 invalid (NaN)"),
     "routh_hurwitz": ("1", "Routh-Hurwitz criterion: all eigenvalues in the left half-plane"),
     "n_equilibria": ("1", "number of equilibria found"),
     "truncated": ("1", "more equilibria exist than slots (raise max_roots)"),
@@ -76,7 +76,8 @@ def model_attributes(model) -> dict:
     for n in VESSEL_PARAMETERS:
         attrs[f"vessel_{n}"] = float(np.asarray(getattr(model.vessel, n)))
     for f in dataclasses.fields(model.towline):
-        attrs[f"towline_{f.name}"] = float(np.asarray(getattr(model.towline, f.name)))
+        v = np.asarray(getattr(model.towline, f.name), float)
+        attrs[f"towline_{f.name}"] = float(v) if v.ndim == 0 else v  # per segment
     attrs["psi_max"] = float(np.asarray(model.psi_max))
     attrs["assumed_values"] = json.dumps(dict(model.assumed)) if model.assumed else "none"
     if model.assumed:
@@ -124,13 +125,26 @@ def sweep_dataset(model, arrays: dict, *, method: str) -> xr.Dataset:
 
 
 def save_dataset(ds: xr.Dataset, path) -> None:
-    """Write a dataset to NetCDF (booleans stored as int8, restored by `load_dataset`)."""
+    """Write a dataset to NetCDF (booleans stored as int8, restored by `load_dataset`).
+
+    Atomic: the file is written beside ``path`` under a temporary name and renamed into
+    place, so an interrupted write never leaves a partial file under the final name."""
+    import os
+    from pathlib import Path
+
     ds = ds.copy()
     for k, v in ds.data_vars.items():
         if v.dtype == bool:
             ds[k] = v.astype("int8")
             ds[k].attrs["jaxtow_bool"] = 1
-    ds.to_netcdf(path)
+    path = Path(path)
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        ds.to_netcdf(tmp)
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
 
 
 def load_dataset(path) -> xr.Dataset:

@@ -6,6 +6,7 @@ import numpy as np
 import xarray as xr
 
 from ..resistance._budget import COMPONENTS, Budget
+from ..resistance._flow import CoefficientTable
 
 
 def resistance_dataset(
@@ -72,4 +73,19 @@ def resistance_dataset(
             "component": list(COMPONENTS),
         },
         attrs=a,
+    )
+
+
+def read_coefficient_table(path) -> CoefficientTable:
+    """A port-starboard symmetric OCIMF-form coefficient table (wind or current) from a CSV
+    file of four columns angle_deg, cx, cy, cn over 0…180° (``#`` comments);
+    `jaxtow.resistance.CoefficientTable.symmetric`. ValueError names the file."""
+    try:
+        t = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
+    except (ValueError, OSError) as e:
+        raise ValueError(f"{path}: {e}") from None
+    if t.shape[1] != 4:
+        raise ValueError(f"{path}: expected 4 columns angle_deg, cx, cy, cn, got {t.shape[1]}")
+    return CoefficientTable.symmetric(
+        t[:, 0], t[:, 1], t[:, 2], t[:, 3], label=f"wind table {path}"
     )

@@ -26,7 +26,7 @@ def plot_equilibria_vs(ds, param: str, ax=None, title: str | None = None):
     valid = ds["valid"].transpose(param, "equilibrium").values
     X = np.broadcast_to(x[:, None], psi.shape)
     stable = valid & (st < 0)
-    unstable = valid & (st > 0)
+    unstable = valid & (st == 1)
     ax.plot(X[stable], psi[stable], "o", ms=3, color="tab:blue", label="stable")
     ax.plot(X[unstable], psi[unstable], "o", ms=3, mfc="none", color="tab:red", label="unstable")
     ax.set_xlabel(f"{param}' [-]")

@@ -131,6 +131,24 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
         rows.append(["towline length", f"{t['length_m']:.1f} m (l0' = {t['l0']:g})"])
         rows.append(["attachment", f"x_p' = {t['xp']:g}, y_p' = {t['yp']:g}"])
         rows.append(["stiffness EA'", f"{t['EA_nd']:.1f}"])
+        g = t.get("strength")
+        if g:
+            rows.append(
+                [
+                    "towline make",
+                    "; ".join(f"{x['name']}, {x['length_m']:.0f} m" for x in g["segments"]),
+                ]
+            )
+            text = f"weakest {g['weakest']}, MBL {g['mbl_kN']:.0f} kN"
+            if "utilisation" in g:
+                text += (
+                    f"; largest end tension of the valid equilibria {g['max_end_tension_kN']:.0f}"
+                    f" kN = {100 * g['utilisation']:.1f} % of MBL (mean loads: dynamic "
+                    "peaks come on top)"
+                )
+            if "mbl_over_bollard_pull" in g:
+                text += f"; MBL / bollard pull = {g['mbl_over_bollard_pull']:.2f}"
+            rows.append(["towline strength", text])
         c = t.get("catenary")
         if c:
             rows.append(

@@ -47,7 +47,14 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
             froude=float(p.froude),
             pull=float(p.pull),
             operating_resistance=dict(zip(R.COMPONENTS, map(float, p.budget.resistance))),
+            overtaken_energy=float(p.budget.overtaken_energy),
         )
+        if float(p.budget.overtaken_energy) > 1e-3:
+            out["message"] += (
+                f" WARNING: the tow overtakes {100 * float(p.budget.overtaken_energy):.1f} % "
+                "of the sea's wave energy (encounter frequency <= 0), where no drift is "
+                "counted: the wave resistance is incomplete."
+            )
         if route_length:
             out["transit_time_h"] = float(p.transit_time(route_length)) / 3600.0
     return out

@@ -159,7 +159,7 @@ def _catenary_record(model, water_depth):
         end_tension=float(line.end_tension(l) * sc.force),
         sag_m=sag,
         effective_stiffness_nd=float(line.stiffness(l)),
-        elastic_stiffness_nd=float(line.EA / line.l0),
+        elastic_stiffness_nd=float(getattr(line, "series_EA", line.EA) / line.l0),
     )
     if water_depth is not None:
         out.update(
@@ -167,6 +167,28 @@ def _catenary_record(model, water_depth):
             seabed_clearance_m=water_depth - sag,
             seabed_clear=bool(water_depth - sag > 0),
         )
+    return out
+
+
+def _strength_record(tow, model, summary):
+    """The towline's catalogue segments and the largest end tension of the valid equilibria
+    (calm and every sea state) against the weakest segment's MBL."""
+    sc = model.reference_scales
+    line = model.towline
+    recs = [summary["calm"]] + list(summary.get("sea_states", {}).values())
+    T = max((e["tension"] for r in recs for e in r["equilibria"] if e["valid"]), default=None)
+    weakest = min(tow.line_info, key=lambda s: s["mbl_kN"])
+    out = dict(segments=tow.line_info, weakest=weakest["name"], mbl_kN=weakest["mbl_kN"])
+    if T is not None:
+        end = T
+        if hasattr(line, "end_tension"):
+            end = float(line.end_tension(line.length_at_tension(T)))
+        out.update(
+            max_end_tension_kN=end * sc.force / 1e3,
+            utilisation=end * sc.force / 1e3 / weakest["mbl_kN"],
+        )
+    if tow.tug is not None:
+        out["mbl_over_bollard_pull"] = weakest["mbl_kN"] * 1e3 / float(tow.tug.bollard_pull)
     return out
 
 
@@ -263,7 +285,7 @@ def tow_study(
         l0=float(line.l0),
         xp=float(line.xp),
         yp=float(line.yp),  # pyright: ignore[reportAttributeAccessIssue]
-        EA_nd=float(line.EA),  # pyright: ignore[reportAttributeAccessIssue]
+        EA_nd=float(getattr(line, "series_EA", line.EA)),  # pyright: ignore[reportAttributeAccessIssue]
         length_m=float(line.l0) * sc.length,
     )
 
@@ -315,6 +337,9 @@ def tow_study(
                 )
             rec.update(hs=float(s.hs), tp=float(s.tp), wind_speed=float(s.wind_speed), notes=notes)
             summary["sea_states"][s.name] = rec
+
+    if tow.line_info:
+        summary["towline"]["strength"] = _strength_record(tow, model, summary)
 
     def stability_map():
         return sweep(model, {"xp": map_xp, "l0": map_l0}, progress=progress)

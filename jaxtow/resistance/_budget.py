@@ -5,12 +5,20 @@ from __future__ import annotations
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 
-from .._rules import POSITIVE
+from .._rules import NONNEGATIVE, POSITIVE, guard, is_concrete
 from .._units import froude_number
-from ..drift import METHODS, QTF, Waterline, irregular_drift, irregular_sailing_drift
+from ..drift import (
+    METHODS,
+    QTF,
+    Waterline,
+    encounter_frequency,
+    irregular_drift,
+    irregular_sailing_drift,
+)
 from ..drift._sailing import check_form
-from ..waves import DEFAULT_OMEGA, jonswap
+from ..waves import DEFAULT_OMEGA, jonswap, spectral_integral
 from ._flow import OCIMFLoad
 from ._sea import SeaState
 from ._tug import Tug
@@ -55,6 +63,16 @@ class WaveDrift(eqx.Module):
         self.omega = jnp.asarray(DEFAULT_OMEGA if omega is None else omega, float)
         self.options = tuple(sorted((options or {}).items()))
         self.form = check_form(form)
+
+    def overtaken_energy(self, hs, tp, gamma, beta, u, v):
+        """Fraction of the sea's m0 at frequencies the tow overtakes (encounter frequency
+        ω_e ≤ 0): there the drift theory does not apply and the drift is taken as zero, so
+        the wave resistance is incomplete by what these waves would add."""
+        S = jonswap(self.omega, hs=hs, tp=tp, gamma=gamma)
+        over = (encounter_frequency(self.omega, beta, u, v) <= 0).astype(S.dtype)
+        return spectral_integral(self.omega, S, over) / spectral_integral(
+            self.omega, S, jnp.ones_like(S)
+        )
 
     def __call__(self, hs, tp, gamma, beta, u, v):
         if self.qtf is not None:
@@ -110,13 +128,15 @@ class TowResistance(eqx.Module):
 class Budget(eqx.Module):
     """Resistance budget at one speed: ``resistance`` (4,) [N] along the course for
     `COMPONENTS` = (current, wind, waves, tug), ``body`` (4, 3) body-axis loads, ``speed``
-    [m/s], ``froude`` Fn = U/√(gL). ``total`` sums the components; ``shares`` gives each in
-    % of the total."""
+    [m/s], ``froude`` Fn = U/√(gL), ``overtaken_energy`` the fraction of the sea's m0 the
+    tow overtakes (ω_e ≤ 0: no drift counted there; > 0 flags an incomplete wave
+    resistance). ``total`` sums the components; ``shares`` gives each in % of the total."""
 
     resistance: jnp.ndarray
     body: jnp.ndarray
     speed: jnp.ndarray
     froude: jnp.ndarray
+    overtaken_energy: jnp.ndarray = eqx.field(default_factory=lambda: jnp.zeros(()))
 
     @property
     def total(self):
@@ -143,11 +163,24 @@ def resistance(
     along = -(body[:, 0] * jnp.cos(heading) - body[:, 1] * jnp.sin(heading))
     r_tug = jnp.zeros(()) if tug is None else tug.resistance(speed)
     body = jnp.concatenate([body, jnp.stack([-r_tug, 0.0 * r_tug, 0.0 * r_tug])[None]])
+    over = (
+        jnp.zeros(())
+        if tow.waves is None
+        else tow.waves.overtaken_energy(
+            sea.hs,
+            sea.tp,
+            sea.gamma,
+            sea.wave_angle - heading,
+            speed * jnp.cos(heading),
+            -speed * jnp.sin(heading),
+        )
+    )
     return Budget(
         resistance=jnp.concatenate([along, r_tug[None]]),
         body=body,
         speed=speed,
         froude=froude_number(speed, tow.length),
+        overtaken_energy=over,
     )
 
 
@@ -170,12 +203,24 @@ def required_pull(
     With a ``tug`` its efficiency η, pull-curve shape and own resistance are used: the rated
     bollard pull BP with η BP P(U)/BP = R_tow(U) + R_tug(U). Differentiable in every input.
     A negative total (the environment pushes the tow ahead) is reported, not clipped."""
+    NONNEGATIVE.check("speed", speed)
     if tug is not None:
         POSITIVE.check("bollard_pull", tug.bollard_pull)
+        if is_concrete(speed) and is_concrete(tug.free_speed):
+            if np.any(np.asarray(speed) >= np.asarray(tug.free_speed)):
+                raise ValueError(
+                    f"parameter 'speed' must be below the tug's free speed "
+                    f"{float(np.max(tug.free_speed)):g} m/s (where its pull vanishes), got "
+                    f"{speed!r}"
+                )
     b = resistance(tow, sea, speed, heading=heading, tug=tug)
     total = b.total
     bp = total if tug is None else total / (tug.efficiency * tug.shape(b.speed))
-    return PullRequirement(towing_force=total, bollard_pull=bp, budget=b)
+    checks = [NONNEGATIVE.traced("speed", speed)]
+    if tug is not None:
+        below = jnp.any(jnp.asarray(speed) >= tug.free_speed)
+        checks.append((below, "parameter 'speed' must be below the tug's free speed"))
+    return guard(PullRequirement(towing_force=total, bollard_pull=bp, budget=b), checks)
 
 
 @eqx.filter_jit

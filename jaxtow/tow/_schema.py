@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from typing import NoReturn
 
 __all__ = ["TowFileError", "TowFileWarning", "Key", "SCHEMA", "ARRAYS", "locate", "to_toml"]
 
@@ -34,7 +35,8 @@ class TowFileWarning(UserWarning):
 @dataclass(frozen=True)
 class Key:
     """One key of a section: ``kind`` float | int | str | bool | floats (a list of numbers) |
-    grid ([lo, hi, n]) | table (an inline table or a string); ``rule`` positive |
+    grid ([lo, hi, n]) | table (an inline table or a string) | tables (a list of inline
+    tables); ``rule`` positive |
     nonnegative | finite | unit (0 < x ≤ 1) | None; ``units`` and ``doc`` for the template and
     the docs; ``default`` (None: no default)."""
 
@@ -70,9 +72,15 @@ SCHEMA: dict[str, dict[str, Key]] = {
         block_coefficient=Key(
             "float",
             "C_B: estimates the linear derivatives Yv, Yr, Nv, Nr that [vessel.derivatives] "
-            "leaves out (Clarke, Gedling & Hine 1983; no appendages, so no skegs)",
+            "leaves out (the regression's; no appendages, so no skegs)",
             "-",
             "unit",
+        ),
+        regression=Key(
+            "str",
+            "clarke | kijima: the linear regression for the derivatives left out; given "
+            "without [vessel.derivatives], every parameter is estimated from L, B, T and C_B "
+            "(jaxtow.presets.particulars_derivatives)",
         ),
         derivatives=Key(
             "table",
@@ -120,6 +128,19 @@ SCHEMA: dict[str, dict[str, Key]] = {
         yp=Key("float", "attachment point y_p' to starboard (by L)", "L", "finite", 0.0),
         EA=Key("float", "axial stiffness EA", "N", "positive"),
         EA_nd=Key("float", "axial stiffness EA' = EA / (½ρTLU²) (instead of EA)", "-", "positive"),
+        line=Key(
+            "str",
+            "a catalogue line (jaxtow.lines): wire | wire-fc | wire-spiral | chain | chain-studlink | nylon "
+            "| polyester; its EA, weight and MBL come from diameter_mm (EA or weight given "
+            "here replace the catalogue's)",
+        ),
+        diameter_mm=Key("float", "nominal diameter of the catalogue line", "mm", "positive"),
+        grade=Key("str", "chain grade: ORQ | R3 | R3S | R4 | R4S | R5 (default R3)"),
+        segments=Key(
+            "tables",
+            "a composite line in series, from the hawser to the tug: [{line, diameter_mm, "
+            "length, grade}, ...] (lengths in m; instead of line, l0/length and EA)",
+        ),
         weight=Key(
             "float",
             "submerged weight per unit length: the line is an elastic catenary "
@@ -238,6 +259,10 @@ def _check(key: Key, value):
         if isinstance(value, (str, dict)):
             return value
         return _Bad(f"expected a string or an inline table, got {value!r}")
+    if kind == "tables":
+        if not isinstance(value, list) or not value or not all(isinstance(x, dict) for x in value):
+            return _Bad(f"expected a list of inline tables, got {value!r}")
+        return value
     if kind == "floats":
         if not isinstance(value, list) or not all(
             isinstance(x, (int, float)) and not isinstance(x, bool) for x in value
@@ -354,7 +379,7 @@ class Problems:
     source: str
     warnings: list = field(default_factory=list)
 
-    def error(self, path: tuple, message: str):
+    def error(self, path: tuple, message: str) -> NoReturn:
         key = ".".join(str(p) if not isinstance(p, int) else f"[{p + 1}]" for p in path)
         key = key.replace(".[", "[")
         raise TowFileError(message, source=self.source, line=locate(self.text, path), key=key)

@@ -78,7 +78,8 @@ def template() -> str:
 class Tow:
     """A resolved tow file. ``resolved`` is the file with every default filled in (what
     `show` prints); ``assumed`` the (key, note) pairs of every estimate the results depend
-    on; ``warnings`` the values outside the physics' or the data's range. Build the model
+    on; ``warnings`` the values outside the physics' or the data's range; ``line_info``
+    the catalogue lines of the towline (name, length, MBL) where it names them. Build the model
     objects with `model`, `resistance`, `sea_model`; `drift` gives the drift QTF."""
 
     name: str
@@ -99,6 +100,7 @@ class Tow:
     wind_table: object
     wind_height: float
     warnings: tuple = ()
+    line_info: list | None = None
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
 
     # ------------------------------------------------------------------ model objects
@@ -323,6 +325,16 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
                     ("vessel", k),
                     "missing key: a vessel without a preset needs length, breadth and draft",
                 )
+        regression = v.get("regression")
+        if regression is not None and regression not in presets.REGRESSIONS:
+            p.error(
+                ("vessel", "regression"),
+                f"unknown regression {regression!r}; known: {', '.join(presets.REGRESSIONS)}",
+            )
+        if regression is not None and "block_coefficient" not in v:
+            p.error(("vessel", "block_coefficient"), "missing key: a regression needs C_B")
+        if regression is not None and "derivatives" not in v:
+            v["derivatives"] = {}
         if "derivatives" in v:
             d = v["derivatives"]
             if not isinstance(d, dict):
@@ -339,28 +351,30 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
                     or not math.isfinite(val)
                 ):
                     p.error(("vessel", "derivatives", k), f"expected a finite number, got {val!r}")
-            linear = [k for k in ("Yv", "Yr", "Nv", "Nr") if k not in d]
             extra_notes = []
-            if linear and "block_coefficient" in v:
-                est = presets.clarke_linear_derivatives(
-                    v["length"], v["breadth"], v["draft"], v["block_coefficient"]
+            if "block_coefficient" in v:
+                # every parameter is estimable; with no regression named only the linear
+                # ones are filled (Clarke), the rest must be given
+                est, est_notes = presets.particulars_derivatives(
+                    v["length"],
+                    v["breadth"],
+                    v["draft"],
+                    v["block_coefficient"],
+                    regression or "clarke",
                 )
-                d = {**d, **{k: est[k] for k in linear}}
-                where = "" if est["lb_in_range"] else "; L/B OUTSIDE the regression's range"
-                extra_notes = [
-                    (
-                        k,
-                        f"Clarke, Gedling & Hine (1983) linear regression with C_B = "
-                        f"{v['block_coefficient']:g} (no appendages: skegs are not seen){where}; estimate",
-                    )
-                    for k in linear
-                ]
+                fill = [k for k in _DERIVATIVES + _ADDED if k not in d]
+                if regression is None:
+                    fill = [k for k in fill if k in ("Yv", "Yr", "Nv", "Nr")]
+                elif "a11" in d and "Yr" in fill and regression == "kijima":
+                    est["Yr"] += float(d["a11"]) - est["a11"]  # Y_r' − m_x' = πk/4
+                d = {**d, **{k: est[k] for k in fill}}
+                extra_notes = [(k, est_notes[k]) for k in fill]
             missing = [k for k in _DERIVATIVES if k not in d]
             if missing:
                 p.error(("vessel", "derivatives"), f"missing derivative(s) {', '.join(missing)}")
             vals = {k: float(d[k]) for k in d}
             notes = list(extra_notes)
-            if not all(k in vals for k in _ADDED):
+            if not all(k in vals for k in _ADDED):  # a full table without added masses
                 added = presets.clarke_added_mass(vals["m"], v["length"], v["breadth"], v["draft"])
                 for k in _ADDED:
                     if k not in vals:
@@ -452,20 +466,12 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
         wind_table = presets.barge2_wind_table()
         assumed.append(("wind_table", presets.ASSUMPTIONS["wind_table"]["note"]))
     else:
-        from ..resistance._flow import CoefficientTable
+        from ..io.resistance import read_coefficient_table
 
-        path = _path(h["wind_table"], base)
         try:
-            import numpy as np
-
-            t = np.loadtxt(path, delimiter=",", comments="#", ndmin=2)
-            if t.shape[1] != 4:
-                raise ValueError("expected 4 columns angle_deg, cx, cy, cn")
-            wind_table = CoefficientTable.symmetric(
-                t[:, 0], t[:, 1], t[:, 2], t[:, 3], label=f"wind table {path}"
-            )
-        except (ValueError, OSError) as e:
-            p.error(("hull", "wind_table"), f"{path}: {e}")
+            wind_table = read_coefficient_table(_path(h["wind_table"], base))
+        except ValueError as e:
+            p.error(("hull", "wind_table"), str(e))
     if "wind_height" not in h:
         h["wind_height"] = float(presets.ASSUMPTIONS["wind_height"]["value"])
         assumed.append(("wind_height", presets.ASSUMPTIONS["wind_height"]["note"]))
@@ -474,20 +480,33 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
     # ---------------------------------------------------------------- towline
     t = sec["towline"]
     towline = None
+    line_info = None
     if "towline" in data:
-        for pair in _PAIRS.values():
+        catalogue = _catalogue_line(p, t)
+        if "segments" in t:
+            for k in ("l0", "length", "EA", "EA_nd", "weight", "line", "diameter_mm", "grade"):
+                if k in t:
+                    p.error(("towline", k), "a composite line's segments set it: drop the key")
+        for name, pair in _PAIRS.items():
             given = [k for k in pair if k in t]
-            if len(given) != 1 and not (pair[0] == "xp" and "bridle" in t):
+            optional = (
+                (name == "attachment" and "bridle" in t)
+                or (name == "stiffness" and (catalogue is not None or "segments" in t))
+                or (name == "length" and "segments" in t)
+            )
+            if len(given) > 1 or (not given and not optional):
                 what = "one of " + " or ".join(pair)
                 p.error(
                     ("towline", pair[0]),
                     f"give exactly {what}" + (" (got both)" if len(given) == 2 else ""),
                 )
-        l0 = t["l0"] if "l0" in t else t["length"] / L
+        l0 = t["l0"] if "l0" in t else t.get("length", 0.0) / L
         if "EA_nd" in t:
             EA_nd = t["EA_nd"]
-        else:
+        elif "EA" in t:
             EA_nd = float(t["EA"] / scales.force)
+        else:
+            EA_nd = float(catalogue.EA / scales.force) if catalogue is not None else 0.0
         if "bridle" in t:
             b = t["bridle"]
             if not isinstance(b, dict) or set(b) != set(_BRIDLE):
@@ -504,15 +523,28 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
             xp, yp = float(apex[0]), float(apex[1])
         else:
             xp, yp = (t["xp"] if "xp" in t else t["xp_m"] / L), t["yp"]
+        segs = _segments(p, t["segments"]) if "segments" in t else None
         try:
-            if "weight" in t:
+            if segs is not None:
+                from .. import lines
+
+                towline = lines.composite(segs, scales=scales, xp=xp, yp=yp)
+                line_info = [_line_record(lt, length) for lt, length in segs]
+                assumed.append(("towline", "; ".join(f"{lt.name}: {lt.source}" for lt, _ in segs)))
+            elif "weight" in t or catalogue is not None:
+                weight = t["weight"] if "weight" in t or catalogue is None else catalogue.weight
                 towline = CatenaryTowline(
-                    l0=l0, xp=xp, EA=EA_nd, w=float(t["weight"] * L / scales.force), yp=yp
+                    l0=l0, xp=xp, EA=EA_nd, w=float(weight * L / scales.force), yp=yp
                 )
             else:
                 towline = Towline(l0=l0, xp=xp, EA=EA_nd, yp=yp)
         except ValueError as e:
             p.error(("towline", _field_key(str(e), t)), str(e))
+        if catalogue is not None:
+            if "EA" in t or "EA_nd" in t:
+                catalogue = catalogue.with_values(EA=float(EA_nd * scales.force))
+            line_info = [_line_record(catalogue, l0 * L)]
+            assumed.append(("towline", f"{catalogue.name}: {catalogue.source}"))
         if "EA" in t and "preset" in v and t["EA"] == presets.ASSUMPTIONS["EA"]["value"]:
             assumed.append(("EA", presets.ASSUMPTIONS["EA"]["note"]))
     elif vessel is not None:
@@ -630,6 +662,72 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
         wind_table=wind_table,
         wind_height=float(h["wind_height"]),
         warnings=tuple(p.warnings),
+        line_info=line_info,
+    )
+
+
+_SEGMENT_KEYS = {"line", "diameter_mm", "length", "grade"}
+
+
+def _catalogue_line(p: Problems, t: dict):
+    """The `jaxtow.lines.LineType` named by [towline] line and diameter_mm (None if none)."""
+    if "line" not in t:
+        for k in ("diameter_mm", "grade"):
+            if k in t:
+                p.error(("towline", k), "needs line = ... (a catalogue line)")
+        return None
+    from .. import lines
+
+    if "diameter_mm" not in t:
+        p.error(("towline", "diameter_mm"), "missing key: a catalogue line needs its diameter")
+    try:
+        return lines.line(t["line"], t["diameter_mm"] / 1e3, grade=t.get("grade", "R3"))
+    except ValueError as e:
+        key = "grade" if "grade" in str(e) else "diameter_mm" if "diameter" in str(e) else "line"
+        p.error(("towline", key), str(e).replace(" m for", " for").replace("give metres", "mm?"))
+
+
+def _segments(p: Problems, segs: list) -> list:
+    """[(LineType, length [m]), ...] of [towline] segments (each checked, named by index)."""
+    from .. import lines
+
+    out = []
+    for i, seg in enumerate(segs):
+        where = ("towline", "segments")
+        unknown = set(seg) - _SEGMENT_KEYS
+        if unknown:
+            p.error(
+                where,
+                f"segment {i + 1}: unknown key(s) {sorted(unknown)} (known: "
+                f"{sorted(_SEGMENT_KEYS)})",
+            )
+        missing = {"line", "diameter_mm", "length"} - set(seg)
+        if missing:
+            p.error(where, f"segment {i + 1}: missing key(s) {sorted(missing)}")
+        num = [seg["diameter_mm"], seg["length"]]
+        if not all(
+            isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x) and x > 0
+            for x in num
+        ):
+            p.error(where, f"segment {i + 1}: diameter_mm and length must be numbers > 0")
+        try:
+            lt = lines.line(seg["line"], seg["diameter_mm"] / 1e3, grade=seg.get("grade", "R3"))
+        except ValueError as e:
+            p.error(where, f"segment {i + 1}: {e}")
+        out.append((lt, float(seg["length"])))
+    if len(out) < 2:
+        p.error(("towline", "segments"), "a composite line needs at least two segments")
+    return out
+
+
+def _line_record(lt, length: float) -> dict:
+    return dict(
+        name=lt.name,
+        length_m=float(length),
+        mbl_kN=lt.mbl / 1e3,
+        EA_N=lt.EA,
+        weight_N_per_m=lt.weight,
+        source=lt.source,
     )
 
 

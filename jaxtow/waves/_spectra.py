@@ -40,8 +40,25 @@ def _peak_enhancement(omega, tp, gamma, sigma_a, sigma_b):
     return gamma**A
 
 
+def check_ascending(omega, name: str = "omega") -> None:
+    """Eager check of an integration grid (skipped when traced): a finite 1-D array of at
+    least two strictly ascending values. On a descending grid the trapezoidal rule changes
+    sign; ValueError naming ``name`` instead."""
+    if not V.is_concrete(omega):
+        return
+    w = np.asarray(omega, dtype=float)
+    if w.ndim != 1 or w.size < 2 or not np.all(np.isfinite(w)):
+        raise ValueError(
+            f"parameter {name!r} must be a finite 1-D grid of at least 2 frequencies, got "
+            f"shape {w.shape}"
+        )
+    if not np.all(np.diff(w) > 0):
+        raise ValueError(f"parameter {name!r} must be strictly ascending")
+
+
 def _integrate(omega, y):
     """Trapezoidal rule over the given ω grid (last axis)."""
+    check_ascending(omega)
     omega = jnp.asarray(omega)
     return jnp.sum(0.5 * (y[..., 1:] + y[..., :-1]) * jnp.diff(omega), axis=-1)
 
@@ -64,7 +81,15 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
     if normalise:
         m0 = _integrate(omega, s)
         s = s * (hs**2 / 16.0) / m0
-    return s
+    # under jit or vmap the eager checks cannot see the values: the same rules, traced
+    return V.guard(
+        s,
+        [
+            V.POSITIVE.traced("hs", hs),
+            V.POSITIVE.traced("tp", tp),
+            GAMMA_RULE.traced("gamma", gamma),
+        ],
+    )
 
 
 def pierson_moskowitz(omega, *, hs, tp):
@@ -80,7 +105,9 @@ def pierson_moskowitz(omega, *, hs, tp):
     pos, w = _positive_omega(omega)
     wp = 2 * jnp.pi / tp
     s = 5.0 / 16.0 * hs**2 * wp**4 * w**-5 * jnp.exp(-1.25 * (wp / w) ** 4)
-    return jnp.where(pos, s, 0.0)
+    return V.guard(
+        jnp.where(pos, s, 0.0), [V.POSITIVE.traced("hs", hs), V.POSITIVE.traced("tp", tp)]
+    )
 
 
 class AbstractSpectrum(V.Checked):

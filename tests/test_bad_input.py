@@ -1,0 +1,176 @@
+"""Bad input gives a clear error that names the parameter, never a silent wrong answer:
+the cases a campaign of bad inputs found silent, each with its reproduction."""
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+import jaxtow as jt
+
+P = jt.presets
+
+
+@pytest.fixture(scope="module")
+def model():
+    return jt.TowModel(vessel=P.barge_2a(), towline=P.default_towline(), scales=P.barge2_scales())
+
+
+def test_nan_eigenvalues_are_invalid_not_marginal():
+    code = int(jt.classify(jnp.nan))
+    assert jt.STABILITY_LABELS[code].startswith("invalid")
+    assert (
+        int(jt.classify(0.0)) == 0 and int(jt.classify(-1.0)) == -1 and int(jt.classify(1.0)) == 1
+    )
+
+
+def test_vector_field_wants_the_six_states(model):
+    with pytest.raises(ValueError, match=r"y must be the state .* shape \(6,\), got shape \(5,\)"):
+        jt.vector_field(0.0, jnp.ones(5), model)
+
+
+def test_eigenvalues_under_jit_check_the_model(model):
+    bad = jt.with_parameters(model, l0=-1.0)
+    y = jt.equilibria(model).state[0]
+    with pytest.raises(Exception, match="l0"):
+        jax.jit(jt.eigenvalues)(bad, y).block_until_ready()
+    with pytest.raises(Exception, match="l0"):
+        jax.jit(jt.max_real_eigenvalue)(bad, y).block_until_ready()
+
+
+def test_simulate_needs_a_finite_end(model):
+    with pytest.raises(ValueError, match="'t1' must be finite"):
+        jt.simulate(model, jt.initial_state(model, y0=0.3), t1=float("inf"))
+
+
+def test_spectra_and_integrals_on_bad_grids():
+    W = jt.waves
+    w = jnp.linspace(0.2, 2.0, 50)
+    with pytest.raises(ValueError, match="'omega' must be strictly ascending"):
+        W.jonswap(w[::-1], hs=2.0, tp=8.0, normalise=True)
+    with pytest.raises(ValueError, match="at least 2 frequencies"):
+        W.jonswap(jnp.array([0.8]), hs=2.0, tp=8.0, normalise=True)
+    with pytest.raises(ValueError, match="strictly ascending"):
+        W.spectral_integral(w[::-1], jnp.ones(50), jnp.ones(50))
+    # under jit and vmap the same rules, traced
+    with pytest.raises(Exception, match="'hs' must be > 0"):
+        jax.jit(lambda h: W.jonswap(w, hs=h, tp=8.0))(-1.0).block_until_ready()
+    with pytest.raises(Exception, match="'tp' must be > 0"):
+        jax.vmap(lambda tp: W.jonswap(w, hs=2.0, tp=tp))(jnp.array([8.0, 0.0])).block_until_ready()
+    # a descending integration grid for the irregular-sea force is refused at construction
+    qtf = jt.drift.database("barge2", "near_field")
+    with pytest.raises(ValueError, match="ascending"):
+        jt.forces.IrregularWaveDriftForce(
+            qtf=qtf, spectrum=W.Jonswap(hs=2.0, tp=8.0), omega=w[::-1], scales=P.barge2_scales()
+        )
+
+
+def test_required_pull_speed_is_checked():
+    R = jt.resistance
+    tow = P.barge2_resistance("2a")
+    sea = P.sea_state("survival")
+    tug = P.illustrative_tug()
+    with pytest.raises(ValueError, match="'speed' must be >= 0"):
+        R.required_pull(tow, sea, speed=-1.0, tug=tug)
+    with pytest.raises(ValueError, match="below the tug's free speed"):
+        R.required_pull(tow, sea, speed=float(tug.free_speed) + 1.0, tug=tug)
+
+
+def test_design_grids_and_ranges_inside_the_rules(model):
+    D = jt.design
+    with pytest.raises(ValueError, match="xp"):
+        D.grid_search(model, {"xp": [0.5, 1.5], "l0": [2.0, 2.5]})
+    with pytest.raises(ValueError, match="bounds.*xp"):
+        D.optimise_towline(model, variables=("xp",), bounds={"xp": (0.5, 1.4)})
+    with pytest.raises(ValueError, match="l0"):
+        D.sensitivity_arrays(model, ["Yv"], sweep={"l0": [2.0, -1.0]})
+
+
+def test_continuation_range_and_step(model):
+    ct = jt.continuation
+    with pytest.raises(ValueError, match="'ds' must be > 0"):
+        ct.equilibrium_branch(model, "l0", p_range=(1.0, 3.0), ds=0.0)
+    with pytest.raises(ValueError, match="p_range.*l0"):
+        ct.equilibrium_branch(model, "l0", p_range=(-1.0, 3.0))
+
+
+def test_save_dataset_is_atomic(tmp_path, monkeypatch):
+    """A write that fails part-way leaves the previous file (or none), never a partial one
+    under the final name."""
+    import xarray as xr
+
+    from jaxtow.io import load_dataset, save_dataset
+
+    good = xr.Dataset({"a": ("x", np.arange(3.0)), "ok": ("x", np.array([True, False, True]))})
+    path = tmp_path / "map.nc"
+    save_dataset(good, path)
+
+    def broken(self, target, *a, **k):
+        open(target, "wb").write(b"partial")
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(xr.Dataset, "to_netcdf", broken)
+    with pytest.raises(KeyboardInterrupt):
+        save_dataset(good.assign(a=("x", np.ones(3))), path)
+    monkeypatch.undo()
+    back = load_dataset(path)
+    np.testing.assert_array_equal(back["a"].values, np.arange(3.0))
+    assert back["ok"].dtype == bool
+    assert [p.name for p in tmp_path.iterdir()] == ["map.nc"]
+
+
+def _cli_error(argv, capsys):
+    from jaxtow.cli import main
+
+    with pytest.raises(SystemExit) as e:
+        main(argv)
+    assert e.value.code not in (0, None)
+    err = capsys.readouterr().err + (e.value.code if isinstance(e.value.code, str) else "")
+    assert "Traceback" not in err
+    return err
+
+
+def test_cli_counts_and_steps_must_be_positive(capsys):
+    assert "expected a whole number >= 1, got 0" in _cli_error(["drift", "--n-omega", "0"], capsys)
+    assert "expected a whole number >= 1" in _cli_error(
+        ["bem", "barge2a", "--n-omega", "-3"], capsys
+    )
+    assert "expected a finite number > 0" in _cli_error(
+        ["bifurcation", "--param", "xp", "--ds", "0"], capsys
+    )
+
+
+def test_resistance_config_sections_and_route_are_checked(tmp_path, capsys):
+    from importlib import resources
+
+    text = resources.files("jaxtow").joinpath("data", "resistance_barge2.toml").read_text()
+    bad = tmp_path / "routex.toml"
+    bad.write_text(text.replace("[route]", "[routex]"))
+    assert "unknown section(s) ['routex']" in _cli_error(["resistance", str(bad)], capsys)
+    neg = tmp_path / "neg.toml"
+    neg.write_text(
+        text.replace("[route]", "[route]\nlength_m = -5.0\n").replace("length_nm", "# length_nm")
+    )
+    assert "route length must be > 0" in _cli_error(["resistance", str(neg)], capsys)
+
+
+def test_overtaken_waves_are_flagged_in_the_resistance_budget():
+    """Following seas at speed: waves faster than ω = g/U are overtaken (ω_e <= 0), where
+    no drift is counted; the budget says how much of the sea's energy that is."""
+    import math
+
+    R = jt.resistance
+    tow = P.barge2_resistance("2a")
+    head = P.sea_state("sailing")
+    follow = P.sea_state("sailing", wave_angle=math.pi)
+    assert float(R.resistance(tow, head, 4.0).overtaken_energy) == 0.0
+    assert float(R.resistance(tow, follow, 1.0).overtaken_energy) == 0.0
+    over = [float(R.resistance(tow, follow, U).overtaken_energy) for U in (4.0, 6.0)]
+    assert 0.0 < over[0] < over[1] < 0.1
+    # by hand: the JONSWAP energy above ω = g/U (following seas: ω_e = ω − ω²U/g)
+    w = jt.waves.DEFAULT_OMEGA
+    S = jt.waves.jonswap(w, hs=float(follow.hs), tp=float(follow.tp), gamma=float(follow.gamma))
+    frac = jt.waves.spectral_integral(w, S, (w >= 9.80665 / 6.0).astype(float))
+    assert over[1] == pytest.approx(
+        float(frac / jt.waves.spectral_integral(w, S, jnp.ones_like(S))), rel=0.05
+    )
