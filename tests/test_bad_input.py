@@ -174,3 +174,24 @@ def test_overtaken_waves_are_flagged_in_the_resistance_budget():
     assert over[1] == pytest.approx(
         float(frac / jt.waves.spectral_integral(w, S, jnp.ones_like(S))), rel=0.05
     )
+
+
+def test_two_runs_into_one_folder_cannot_overwrite_each_other(tmp_path, capsys):
+    """The output folder is locked for the run: a second run into it stops at once with a
+    message (here the first run is simulated by holding the lock), and --out naming a file
+    is refused before any computing."""
+    pytest.importorskip("fcntl", reason="output locks are POSIX")
+    from jaxtow.cli import _lock_output
+
+    first = _lock_output(tmp_path / "out")
+    assert first is not None
+    try:
+        with pytest.raises(SystemExit, match="another jaxtow run is writing into"):
+            _lock_output(tmp_path / "out")
+    finally:
+        first.close()
+    again = _lock_output(tmp_path / "out")  # free once the first run ends
+    assert again is not None
+    again.close()
+    (tmp_path / "file").write_text("x")
+    assert "is a file" in _cli_error(["calm", "--out", str(tmp_path / "file")], capsys)

@@ -18,6 +18,7 @@ def branches(barge_2a, barge_2b):
     }
 
 
+@pytest.mark.slow  # default-suite time: the branch continuation of both barges
 @pytest.mark.parametrize("name, expected", [("2a", 0.4227), ("2b", 0.1040)])
 def test_pitchfork_at_nv_over_yv(branches, name, expected, barge_2a, barge_2b):
     v = barge_2a if name == "2a" else barge_2b
@@ -40,6 +41,7 @@ def test_pitchfork_at_nv_over_yv(branches, name, expected, barge_2a, barge_2b):
         assert child.p.min() == pytest.approx(bps[0].parameter, abs=1e-3)
 
 
+@pytest.mark.slow  # default-suite time: the branch continuation of both barges
 def test_side_branch_points_are_equilibria_and_folds_are_located(branches, barge_2b):
     child = branches["2b"].children[0]
     for p, psi in zip(child.p[::7], child.psi[::7]):
@@ -66,6 +68,7 @@ def test_side_branch_points_are_equilibria_and_folds_are_located(branches, barge
         assert abs(float(jax.grad(jt.heading_residual)(f.psi, m))) < 1e-8
 
 
+@pytest.mark.slow  # default-suite time: the branch continuation of both barges
 def test_hopf_points_match_sign_change_of_sampled_max_real(branches, barge_2b):
     hopf = sorted(s.parameter for s in branches["2b"].points("hopf") if s.psi == 0.0)
     assert len(hopf) == 2 and 0.2 < hopf[0] < hopf[1] < 0.45
@@ -100,6 +103,7 @@ def test_hopf_points_match_sign_change_of_sampled_max_real(branches, barge_2b):
             assert s.frequency > 0 and s.lyapunov < 0  # supercritical: a small stable cycle is born
 
 
+@pytest.mark.slow  # default-suite time: the branch continuation of both barges
 def test_time_domain_onset_at_the_hopf_point(branches, barge_2b):
     h = min(s.parameter for s in branches["2b"].points("hopf") if s.psi == 0.0)
 
@@ -114,6 +118,7 @@ def test_time_domain_onset_at_the_hopf_point(branches, barge_2b):
     assert late_amplitude(h + 0.01) > 0.01  # above: it grows into a limit cycle
 
 
+@pytest.mark.slow  # default-suite time: a 3000-long time-domain run and a shooting solve
 def test_limit_cycle_matches_long_time_domain_run(barge_2b):
     m = model(barge_2b, l0=0.5, xp=0.32)
     orbit = ct.limit_cycle_from_simulation(m, t1=1500.0)

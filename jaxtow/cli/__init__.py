@@ -95,8 +95,41 @@ def main(argv=None) -> int:
             raise SystemExit(f"error: {e}") from None
 
     matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
-    args.func(args)
+    lock = _lock_output(getattr(args, "out", None))
+    try:
+        args.func(args)
+    finally:
+        if lock is not None:
+            lock.close()
     return 0
+
+
+def _lock_output(out):
+    """Create the output folder and hold an exclusive lock on it for the run, so that two
+    runs into one folder cannot overwrite each other's files: the second stops at once with
+    a message (POSIX; elsewhere no lock). None where the command has no --out."""
+    if out is None:
+        return None
+    from pathlib import Path
+
+    path = Path(out)
+    if path.exists() and not path.is_dir():
+        raise SystemExit(f"error: --out {out} is a file; give a folder for the outputs")
+    path.mkdir(parents=True, exist_ok=True)
+    try:
+        import fcntl
+    except ImportError:  # not POSIX
+        return None
+    f = open(path / ".jaxtow.lock", "w")
+    try:
+        fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        f.close()
+        raise SystemExit(
+            f"error: another jaxtow run is writing into {path}; wait for it to finish or "
+            "give another --out"
+        ) from None
+    return f
 
 
 if __name__ == "__main__":

@@ -50,7 +50,7 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
             overtaken_energy=float(p.budget.overtaken_energy),
         )
         if float(p.budget.overtaken_energy) > 1e-3:
-            out["message"] += (
+            out["message"] = str(msg) + (
                 f" WARNING: the tow overtakes {100 * float(p.budget.overtaken_energy):.1f} % "
                 "of the sea's wave energy (encounter frequency <= 0), where no drift is "
                 "counted: the wave resistance is incomplete."
