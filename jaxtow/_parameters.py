@@ -86,7 +86,12 @@ def get_parameter(model: TowModel, name: str):
 
 
 def with_parameters(model: TowModel, **values) -> TowModel:
-    """Copy of `model` with the named parameters replaced (works under jit and vmap)."""
+    """Copy of `model` with the named parameters replaced (works under jit and vmap).
+    Concrete values are checked against each parameter's rule (`check_values`: the check
+    the constructors make, which `eqx.tree_at` alone would bypass); traced ones are checked
+    where the model is used (`TowModel.checks`)."""
+    for name, val in values.items():
+        check_values(model, name, val)
     if "u_tug" in values:  # first: the other non-dimensional values refer to the new speed
         values = dict(values)
         model = at_tug_speed(model, values.pop("u_tug"))

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 
 import jax
 import jax.numpy as jnp
@@ -151,8 +151,9 @@ def sweep_arrays(
     routh_hurwitz: bool = True,
     eig_method: str | None = None,
     eigenvalues: bool = False,
-    kernel=None,
+    kernel: Callable | None = None,
     specialise: bool = False,
+    checkpoint=None,
 ) -> dict:
     """Run the sweep and return NumPy arrays shaped ``grid_shape + (slots[, 6])``.
 
@@ -167,6 +168,9 @@ def sweep_arrays(
     instance (its arrays become compile-time constants): about 2x faster for an expensive
     force model (a QTF wave force), at one compilation per model instead of one per model
     structure; pass a `make_specialised_kernel` as ``kernel`` to reuse it).
+    ``checkpoint``: a folder where each finished chunk is saved as it completes
+    (`jaxtow.io.checkpoint`); a sweep interrupted and run again with the same folder, model,
+    grid and options computes only the chunks that are missing.
     """
     if not grid:
         raise ValueError("parameter 'grid' must name at least one parameter")
@@ -197,6 +201,7 @@ def sweep_arrays(
     chunk = max(ndev, min(int(chunk_size), 1 << max(npts - 1, 1).bit_length()))
     chunk = int(math.ceil(chunk / ndev) * ndev)
     nchunks = int(math.ceil(npts / chunk))
+    user_kernel = kernel is not None
     if kernel is None:
         options = dict(
             method=method,
@@ -211,16 +216,37 @@ def sweep_arrays(
             if specialise
             else make_batched_kernel(**options)
         )
+    store = None
+    if checkpoint is not None:
+        from .io.checkpoint import ChunkStore, fingerprint
+
+        opts = dict(
+            method=method,
+            n_grid=n_grid,
+            max_roots=max_roots,
+            psi_range=psi_range,
+            routh_hurwitz=routh_hurwitz,
+            eig_method=eig_method,
+            eigenvalues=eigenvalues,
+            user_kernel=user_kernel,
+            specialise=specialise,
+        )
+        store = ChunkStore(checkpoint, fingerprint(model, names, axes, chunk, opts), nchunks)
     sharding = NamedSharding(mesh, P("points"))
     bar = Progress(nchunks, label="sweep", enabled=progress)
     pieces = []
     for c in range(nchunks):  # chunks, not grid points: each chunk is one vmapped call
         lo, hi = c * chunk, min((c + 1) * chunk, npts)
-        idx = np.arange(lo, lo + chunk)
-        idx = np.where(idx < hi, idx, lo)  # pad the last chunk with a valid point
-        params = {n: jax.device_put(f[idx], sharding) for n, f in zip(names, flat)}
-        res = jax.device_get(kernel(model, params))
-        pieces.append({k: v[: hi - lo] for k, v in res.items()})
+        piece = None if store is None else store.get(c)
+        if piece is None:
+            idx = np.arange(lo, lo + chunk)
+            idx = np.where(idx < hi, idx, lo)  # pad the last chunk with a valid point
+            params = {n: jax.device_put(f[idx], sharding) for n, f in zip(names, flat)}
+            res = jax.device_get(kernel(model, params))
+            piece = {k: np.asarray(v[: hi - lo]) for k, v in res.items()}
+            if store is not None:
+                store.put(c, piece)
+        pieces.append(piece)
         bar.update()
     out = {k: np.concatenate([p[k] for p in pieces]) for k in pieces[0]}
     out = {k: v.reshape(shape + v.shape[1:]) for k, v in out.items()}

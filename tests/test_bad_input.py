@@ -30,12 +30,11 @@ def test_vector_field_wants_the_six_states(model):
 
 
 def test_eigenvalues_under_jit_check_the_model(model):
-    bad = jt.with_parameters(model, l0=-1.0)
     y = jt.equilibria(model).state[0]
+    with pytest.raises(Exception, match="l0"):  # traced l0: only the traced check can see it
+        jax.jit(lambda l0: jt.eigenvalues(jt.with_parameters(model, l0=l0), y))(-1.0)
     with pytest.raises(Exception, match="l0"):
-        jax.jit(jt.eigenvalues)(bad, y).block_until_ready()
-    with pytest.raises(Exception, match="l0"):
-        jax.jit(jt.max_real_eigenvalue)(bad, y).block_until_ready()
+        jax.jit(lambda l0: jt.max_real_eigenvalue(jt.with_parameters(model, l0=l0), y))(-1.0)
 
 
 def test_simulate_needs_a_finite_end(model):
@@ -195,3 +194,53 @@ def test_two_runs_into_one_folder_cannot_overwrite_each_other(tmp_path, capsys):
     again.close()
     (tmp_path / "file").write_text("x")
     assert "is a file" in _cli_error(["calm", "--out", str(tmp_path / "file")], capsys)
+
+
+def test_with_parameters_checks_concrete_values(model):
+    """`eqx.tree_at` bypasses the constructors' checks; `with_parameters` applies the same
+    rules to concrete values."""
+    with pytest.raises(ValueError, match="'EA' must be > 0"):
+        jt.with_parameters(model, EA=-1.0)
+    with pytest.raises(ValueError, match="'l0' must be a number"):
+        jt.with_parameters(model, l0="long")
+    with pytest.raises(ValueError, match="'xp' must lie in"):
+        jt.with_parameters(model, xp=3.0)
+    assert float(jt.with_parameters(model, EA=200.0).towline.EA) == 200.0
+
+
+def test_an_interrupted_sweep_resumes_from_its_checkpoint(tmp_path, monkeypatch, model):
+    """Each finished chunk is saved as it completes; a sweep interrupted in its third chunk
+    and run again computes only the two chunks left, and equals the uninterrupted sweep. A
+    folder of another sweep is refused."""
+    import jaxtow._sweep as S
+
+    grid = {"xp": np.linspace(0.1, 0.9, 8), "l0": np.linspace(1.0, 3.0, 4)}  # 4 chunks of 8
+    ref = jt.sweep_arrays(model, grid, chunk_size=8)
+    real = S.make_batched_kernel
+    state = {"calls": 0, "fail_at": 3}
+
+    def flaky(**options):
+        kernel = real(**options)
+
+        def run(m, p):
+            state["calls"] += 1
+            if state["calls"] == state["fail_at"]:
+                raise KeyboardInterrupt
+            return kernel(m, p)
+
+        return run
+
+    monkeypatch.setattr(S, "make_batched_kernel", flaky)
+    ck = tmp_path / "chunks"
+    with pytest.raises(KeyboardInterrupt):
+        jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=ck)
+    assert sorted(p.name for p in ck.glob("chunk_*.npz")) == ["chunk_00000.npz", "chunk_00001.npz"]
+    state.update(calls=0, fail_at=None)
+    got = jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=ck)
+    assert state["calls"] == 2
+    for k in ("psi", "max_real", "valid", "stability"):
+        np.testing.assert_array_equal(got[k], ref[k])
+    with pytest.raises(ValueError, match="chunks of another sweep"):
+        jt.sweep_arrays(
+            model, {**grid, "l0": np.linspace(1.0, 2.0, 4)}, chunk_size=8, checkpoint=ck
+        )

@@ -5,6 +5,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 import jaxtow as jt
 from jaxtow import _compile_cache as cc
 
@@ -20,6 +22,7 @@ def _entries(folder: Path) -> set:
     return {p.name for p in folder.glob("*-cache")} if folder.exists() else set()
 
 
+@pytest.mark.slow  # default-suite time
 def test_second_cli_run_hits_the_cache(tmp_path):
     folder = tmp_path / "xla"
     args = ["equilibria", "--tow", "barge2b"]
@@ -30,6 +33,7 @@ def test_second_cli_run_hits_the_cache(tmp_path):
     assert _entries(folder) == first  # the second run compiled nothing new
 
 
+@pytest.mark.slow  # default-suite time
 def test_cache_switches(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     assert cc.default_cache_dir() == tmp_path / "jaxtow" / "xla"

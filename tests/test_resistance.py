@@ -183,20 +183,27 @@ def test_tabulated_pull_curve_matches_quadratic(calm):
     )  # cubic Hermite of a quadratic: exact to rounding
 
 
-def test_cli_table_and_config_errors(tmp_path, capsys):
+@pytest.mark.slow  # default-suite time (the operating-speed solve compiles for 40 s)
+def test_cli_table():
     from jaxtow.cli.resistance import build, evaluate, format_table, read_config
 
-    cfg = read_config("barge2")
-    tow, tug, seas, heading, route = build(cfg)
-    assert [s.name for s in seas] == ["survival", "sailing"] and route == pytest.approx(
-        500 * 1852.0
-    )
+    tow, tug, seas, heading, route = build(read_config("barge2"))
     row = evaluate(tow, tug, seas[1], heading, route, n_tp=5)
     text = format_table([row], tug, route)
     assert "sailing" in text and f"{row['operating_speed']:.2f}" in text
     assert (
         row["operating_speed"] < row["physical_tp_range"][1]
     )  # sanity: a speed in m/s, a range in s
+
+
+def test_cli_config_errors(tmp_path):
+    from jaxtow.cli.resistance import build, read_config
+
+    cfg = read_config("barge2")
+    tow, tug, seas, heading, route = build(cfg)
+    assert [s.name for s in seas] == ["survival", "sailing"] and route == pytest.approx(
+        500 * 1852.0
+    )
     bad = dict(cfg, tug=dict(cfg["tug"], bolard_pull_t=3.0))
     with pytest.raises(ValueError, match=r"unknown key\(s\) \['bolard_pull_t'\]"):
         build(bad)

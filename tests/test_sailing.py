@@ -375,6 +375,7 @@ def test_map_figures_hatch_the_invalid_region():
     plt.close(fig)
 
 
+@pytest.mark.slow  # default-suite time
 def test_forms_shift_a_motion_peak_once_or_twice():
     """A QTF with a motion peak at ω0 = 1 rad/s: against the absolute frequency, Aranha's form
     moves the peak down by about δ = ω0² u/g, the thesis's reading by about 2δ, the linear

@@ -10,6 +10,7 @@ import jaxtow as jt
 from jaxtow._stability import routh_first_column
 
 
+@pytest.mark.slow  # default-suite time
 def test_fig_6_4_stability_over_towline_length(barge_2a, barge_2b):
     """x_p' = 0.5, 0.2 <= l0' <= 2.5: Barge 2b straight-behind stable, its side
     equilibria unstable; Barge 2a straight-behind unstable (thesis fig. 6.4)."""

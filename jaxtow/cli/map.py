@@ -19,8 +19,15 @@ def cmd_map(args):
     grid = {}
     for name, lo, hi, n in args.param:
         grid[name] = _grid((lo, hi, n), f"param {name}")
-    try:
-        ds = jt.sweep(
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    stem = tow_name + "_" + "_".join(grid)
+    # finished chunks are kept here while the sweep runs: an interrupted map resumes
+    checkpoint = out / f".{stem}.chunks"
+    import shutil
+
+    def run():
+        return jt.sweep(
             model,
             grid,
             method=args.method,
@@ -28,13 +35,21 @@ def cmd_map(args):
             chunk_size=args.chunk_size,
             max_roots=args.max_roots,
             eigenvalues=args.eigenvalues,
+            checkpoint=checkpoint,
         )
+
+    try:
+        try:
+            ds = run()
+        except ValueError as e:
+            if "chunks of another sweep" not in str(e):
+                raise
+            shutil.rmtree(checkpoint)  # left by an interrupted run of another map: start anew
+            ds = run()
     except ValueError as e:
         raise SystemExit(f"error: {e}") from None
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-    stem = tow_name + "_" + "_".join(grid)
     save_dataset(ds, out / f"{stem}.nc")
+    shutil.rmtree(checkpoint, ignore_errors=True)
     names = list(grid)
     if len(names) == 1:
         save(plot_equilibria_vs(ds, names[0]), out / f"{stem}_equilibria.png")

@@ -1,0 +1,90 @@
+"""Chunk checkpoints of a sweep: each finished chunk is written to a folder as it completes,
+so an interrupted sweep resumes where it stopped (`jaxtow.sweep(..., checkpoint=DIR)`).
+
+The folder holds ``manifest.json`` (a fingerprint of the model, the grid, the chunking and
+the options) and one ``chunk_NNNNN.npz`` a chunk, each written atomically (a temporary name
+renamed into place). A folder made by another sweep is refused, never mixed in.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from pathlib import Path
+
+import jax
+import numpy as np
+
+
+def fingerprint(model, names, axes, chunk: int, options: dict) -> str:
+    """SHA-256 of everything a sweep's results depend on: the model's array values and its
+    structure, the grid, the chunk size and the kernel options."""
+    h = hashlib.sha256()
+    leaves, treedef = jax.tree_util.tree_flatten(model)
+    h.update(str(treedef).encode())
+    for leaf in leaves:
+        a = np.asarray(leaf)
+        h.update(str(a.dtype).encode() + str(a.shape).encode() + a.tobytes())
+    for n, a in zip(names, axes):
+        h.update(n.encode() + np.asarray(a, float).tobytes())
+    h.update(str(chunk).encode())
+    h.update(json.dumps(options, sort_keys=True, default=str).encode())
+    return h.hexdigest()
+
+
+class ChunkStore:
+    """A sweep's checkpoint folder: `get` a finished chunk (None if not there), `put` one."""
+
+    def __init__(self, folder, key: str, nchunks: int):
+        self.folder = Path(folder)
+        if self.folder.exists() and not self.folder.is_dir():
+            raise ValueError(f"parameter 'checkpoint': {folder} is a file; give a folder")
+        self.folder.mkdir(parents=True, exist_ok=True)
+        manifest = self.folder / "manifest.json"
+        want = dict(fingerprint=key, chunks=int(nchunks))
+        if manifest.exists():
+            got = json.loads(manifest.read_text())
+            if got != want:
+                raise ValueError(
+                    f"parameter 'checkpoint': {folder} holds the chunks of another sweep (a "
+                    "different model, grid, chunk size or options); give another folder or "
+                    "remove it"
+                )
+        else:
+            _atomic_write(manifest, json.dumps(want).encode())
+
+    def _path(self, c: int) -> Path:
+        return self.folder / f"chunk_{c:05d}.npz"
+
+    def get(self, c: int) -> dict | None:
+        path = self._path(c)
+        if not path.exists():
+            return None
+        with np.load(path) as z:
+            return {k: z[k] for k in z.files}
+
+    def put(self, c: int, arrays: dict) -> None:
+        path = self._path(c)
+        tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+        try:
+            with open(tmp, "wb") as f:
+                np.savez(f, **arrays)
+            os.replace(tmp, path)
+        finally:
+            if tmp.exists():
+                tmp.unlink()
+
+    def done(self) -> int:
+        """The number of finished chunks in the folder."""
+        return len(list(self.folder.glob("chunk_*.npz")))
+
+
+def _atomic_write(path: Path, data: bytes) -> None:
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    try:
+        tmp.write_bytes(data)
+        os.replace(tmp, path)
+    finally:
+        if tmp.exists():
+            tmp.unlink()
