@@ -208,6 +208,7 @@ def test_with_parameters_checks_concrete_values(model):
     assert float(jt.with_parameters(model, EA=200.0).towline.EA) == 200.0
 
 
+@pytest.mark.slow  # default-suite time
 def test_an_interrupted_sweep_resumes_from_its_checkpoint(tmp_path, monkeypatch, model):
     """Each finished chunk is saved as it completes; a sweep interrupted in its third chunk
     and run again computes only the two chunks left, and equals the uninterrupted sweep. A

@@ -57,7 +57,16 @@ def _raises_under_jit(model):
     ],
 )
 def test_traced_checks_cover_the_external_force(path, value, name):
-    m = jt.with_parameters(jt.study.barge2_wave_model("2a"), **{path: value})  # no eager check here
+    m0 = jt.study.barge2_wave_model("2a")
+    with pytest.raises(ValueError, match=f"'{name}'"):  # with_parameters checks eagerly
+        jt.with_parameters(m0, **{path: value})
+    # a model that bypasses the eager checks (eqx.tree_at): only the traced checks see it
+    where = {
+        "external.omega": lambda mm: mm.external.omega,
+        "external.zeta_a": lambda mm: mm.external.zeta_a,
+        "EA": lambda mm: mm.towline.EA,
+    }[path]
+    m = eqx.tree_at(where, m0, jnp.asarray(value))
     failing = [msg for pred, msg in m.checks() if bool(pred)]
     assert failing == [next(msg for msg in failing if f"'{name}'" in msg)]
     with pytest.raises(Exception, match=f"'{name}'"):

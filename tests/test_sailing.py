@@ -240,6 +240,7 @@ def test_at_tug_speed_equals_rebuilding_the_model():
         jt.sweep(base, {"u_tug": [1.0, -1.0]})
 
 
+@pytest.mark.slow  # default-suite time
 def test_sweep_over_tug_speed_equals_rebuilt_models_calm():
     base = calm_model("2a", l0=2.5)
     speeds = np.array([1.0, 1.5, 3.0])
@@ -341,6 +342,7 @@ def test_irregular_and_wind_forces_have_validity():
     assert not bool(slack["line_taut"]) and not bool(jt.all_valid(slack))
 
 
+@pytest.mark.slow  # default-suite time
 def test_simulation_carries_validity():
     m = jt.study.barge2_wave_model("2a", l0=2.5, omega=1.6, zeta_a=1.25)
     sim = jt.simulate(m, jt.initial_state(m, psi0=0.1), t1=5.0, n_save=11)

@@ -34,6 +34,7 @@ def test_thesis_initial_condition_2b_converges_2a_fishtails(barge_2a, barge_2b):
     assert met["slewing_period"] > 0
 
 
+@pytest.mark.slow  # default-suite time
 def test_time_domain_agrees_with_linear_stability(barge_2a, barge_2b):
     """From a small perturbation of the straight-behind equilibrium the run converges back
     where max Re λ < −margin and departs where max Re λ > +margin."""
@@ -135,6 +136,7 @@ def test_batch_equals_single_runs_and_modes_agree(barge_2b):
     np.testing.assert_allclose(single.ys, a.ys[1], rtol=1e-9, atol=1e-10)
 
 
+@pytest.mark.slow  # default-suite time
 def test_stiff_towline_selects_implicit_solver(barge_2b):
     m = jt.TowModel(vessel=barge_2b, towline=jt.Towline(l0=0.2, xp=0.5, EA=1e6))
     y0 = initial_state(m, y0=0.01)

@@ -30,6 +30,7 @@ def test_fig_6_4_stability_over_towline_length(barge_2a, barge_2b):
             assert side.sum() == 0
 
 
+@pytest.mark.slow  # default-suite time
 def test_routh_hurwitz_agrees_with_eigenvalues(barge_2a, barge_2b):
     for v in (barge_2a, barge_2b):
         ds = jt.sweep(model(v), {"xp": np.linspace(0.0, 0.6, 13), "l0": np.array([0.3, 1.0, 2.5])})
