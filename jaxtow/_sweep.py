@@ -201,16 +201,16 @@ def sweep_arrays(
     chunk = max(ndev, min(int(chunk_size), 1 << max(npts - 1, 1).bit_length()))
     chunk = int(math.ceil(chunk / ndev) * ndev)
     nchunks = int(math.ceil(npts / chunk))
+    options = dict(
+        method=method,
+        n_grid=n_grid,
+        max_roots=max_roots,
+        psi_range=psi_range,
+        routh_hurwitz=routh_hurwitz,
+        eig_method=eig_method,
+    )
     user_kernel = kernel is not None
     if kernel is None:
-        options = dict(
-            method=method,
-            n_grid=n_grid,
-            max_roots=max_roots,
-            psi_range=psi_range,
-            routh_hurwitz=routh_hurwitz,
-            eig_method=eig_method,
-        )
         kernel = (
             make_specialised_kernel(model, **options)
             if specialise
@@ -221,15 +221,7 @@ def sweep_arrays(
         from .io.checkpoint import ChunkStore, fingerprint
 
         opts = dict(
-            method=method,
-            n_grid=n_grid,
-            max_roots=max_roots,
-            psi_range=psi_range,
-            routh_hurwitz=routh_hurwitz,
-            eig_method=eig_method,
-            eigenvalues=eigenvalues,
-            user_kernel=user_kernel,
-            specialise=specialise,
+            options, eigenvalues=eigenvalues, user_kernel=user_kernel, specialise=specialise
         )
         store = ChunkStore(checkpoint, fingerprint(model, names, axes, chunk, opts), nchunks)
     sharding = NamedSharding(mesh, P("points"))

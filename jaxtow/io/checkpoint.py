@@ -10,11 +10,12 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 from pathlib import Path
 
 import jax
 import numpy as np
+
+from ._atomic import atomic_path
 
 
 def fingerprint(model, names, axes, chunk: int, options: dict) -> str:
@@ -52,7 +53,8 @@ class ChunkStore:
                     "remove it"
                 )
         else:
-            _atomic_write(manifest, json.dumps(want).encode())
+            with atomic_path(manifest) as tmp:
+                tmp.write_text(json.dumps(want))
 
     def _path(self, c: int) -> Path:
         return self.folder / f"chunk_{c:05d}.npz"
@@ -65,26 +67,5 @@ class ChunkStore:
             return {k: z[k] for k in z.files}
 
     def put(self, c: int, arrays: dict) -> None:
-        path = self._path(c)
-        tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-        try:
-            with open(tmp, "wb") as f:
-                np.savez(f, **arrays)
-            os.replace(tmp, path)
-        finally:
-            if tmp.exists():
-                tmp.unlink()
-
-    def done(self) -> int:
-        """The number of finished chunks in the folder."""
-        return len(list(self.folder.glob("chunk_*.npz")))
-
-
-def _atomic_write(path: Path, data: bytes) -> None:
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        tmp.write_bytes(data)
-        os.replace(tmp, path)
-    finally:
-        if tmp.exists():
-            tmp.unlink()
+        with atomic_path(self._path(c)) as tmp, open(tmp, "wb") as f:
+            np.savez(f, **arrays)

@@ -129,22 +129,15 @@ def save_dataset(ds: xr.Dataset, path) -> None:
 
     Atomic: the file is written beside ``path`` under a temporary name and renamed into
     place, so an interrupted write never leaves a partial file under the final name."""
-    import os
-    from pathlib import Path
+    from ._atomic import atomic_path
 
     ds = ds.copy()
     for k, v in ds.data_vars.items():
         if v.dtype == bool:
             ds[k] = v.astype("int8")
             ds[k].attrs["jaxtow_bool"] = 1
-    path = Path(path)
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
+    with atomic_path(path) as tmp:
         ds.to_netcdf(tmp)
-        os.replace(tmp, path)
-    finally:
-        if tmp.exists():
-            tmp.unlink()
 
 
 def load_dataset(path) -> xr.Dataset:
