@@ -17,9 +17,9 @@ EXPECTED = {
     "04_new_force.ipynb": [
         "drogue ['psi=+0.00 deg: unstable",
         "drogue: converged",
-        "eager:  parameter 'coefficient' must be >= 0",
-        "traced: ",
-        "parameter 'coefficient' must be >= 0",
+        "constructor:      parameter 'coefficient' must be >= 0",
+        "with_parameters:  parameter 'coefficient' must be >= 0",
+        "traced:           parameter 'coefficient' must be >= 0",
     ],
 }
 
