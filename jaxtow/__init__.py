@@ -31,6 +31,7 @@ _enable_x64()
 from . import (
     continuation as continuation,
     design as design,
+    distributed as distributed,
     drift as drift,
     forces as forces,
     lines as lines,

@@ -109,7 +109,10 @@ def at_tug_speed(model: TowModel, u_tug) -> TowModel:
             "parameter 'u_tug': the model has no reference scales to change the tug speed of; "
             "build it with TowModel(..., scales=jaxtow.Scales(length=..., draft=..., u_tug=...))"
         )
+    V.POSITIVE.check("u_tug", u_tug)  # eager; traced below (a zero speed made EA' infinite)
     u_tug = jnp.asarray(u_tug, dtype=float)
+    bad, message = V.POSITIVE.traced("u_tug", u_tug)
+    u_tug = eqx.error_if(u_tug, bad, message)
     model = eqx.tree_at(
         lambda m: m.towline, model, model.towline.rescaled((ref.u_tug / u_tug) ** 2)
     )
@@ -159,11 +162,13 @@ def force_breakdown(t, y, model: TowModel) -> ForceBreakdown:
 def validity(model: TowModel, y) -> dict:
     """The physics' validity limits at state y, as named flags (True = valid) and the numbers
     behind them: ``line_taut`` (the towline carries tension; a slack line is outside the
-    equilibrium theory of the tow) and the flags of the external force
+    equilibrium theory of the tow), ``moving_ahead`` (u' > 0: the hull moves bow first
+    through the water; a tow that has turned stern first, as a wild fishtail can, is
+    outside the manoeuvring model, whose derivatives are for ahead motion) and the flags of the external force
     (`AbstractExternalForce.validity`, e.g. Froude number, flow separation, encounter
     frequency, heading in the table). Pure; vmap it over states."""
     y = jnp.asarray(y)
-    out = {"line_taut": model.towline.tension(y[3]) > 0}
+    out = {"line_taut": model.towline.tension(y[3]) > 0, "moving_ahead": y[0] > 0}
     out.update(model.external.validity(y))
     return out
 

@@ -34,7 +34,7 @@ from jaxtyping import Array, Bool, Float, Int
 from . import _rules as V
 from ._dynamics import TowModel, force_breakdown, vector_field
 from ._roots import bisect, brackets, newton
-from ._rules import guard
+from ._rules import check_now, guard
 from ._towline import Towline
 from .forces._base import NoExternalForce
 
@@ -198,6 +198,8 @@ def equilibria_fixed(
     """
     if n_grid < 3 or n_grid % 2 == 0:
         raise ValueError(f"parameter 'n_grid' must be an odd integer >= 3, got {n_grid}")
+    if max_roots < 1:
+        raise ValueError(f"parameter 'max_roots' must be >= 1, got {max_roots}")
     if not 0 < psi_range <= math.pi:
         raise ValueError(f"parameter 'psi_range' must lie in (0, pi], got {psi_range}")
     grid = jnp.linspace(-psi_range, psi_range, n_grid)
@@ -220,6 +222,7 @@ def equilibria(
     Parameters are checked (a clear error names any invalid one). See `equilibria_fixed`
     for the jittable form used inside sweeps.
     """
+    check_now(model)  # a clear error here rather than from inside the compiled call
     eqs = _equilibria_jit(model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range)
     if int(eqs.n_roots) > max_roots:  # refuse a silently truncated result
         raise ValueError(

@@ -83,7 +83,15 @@ def at_least(lo: float) -> Rule:
 
 
 def _asarray(x):
-    return jnp.asarray(x)
+    try:
+        return jnp.asarray(x)
+    except (TypeError, ValueError):
+        return x  # not numeric: left for the eager check, which names the field
+
+
+def _is_scalar_field(f) -> bool:
+    """A field annotated as a scalar array (``Float[Array, ""]``)."""
+    return 'Array, ""]' in str(f.type) or "Array, '']" in str(f.type)
 
 
 def _rule_field(*, rule: Rule, **kwargs):
@@ -121,9 +129,18 @@ class Checked(eqx.Module):
     ``checks()``, both from the rules declared on its fields (`rule_field`)."""
 
     def __check_init__(self):
+        scalar = {f.name for f in dataclasses.fields(self) if _is_scalar_field(f)}
         for name, rule in _rules(self):
-            if getattr(self, name) is not None:  # an optional field left out
-                rule.check(name, getattr(self, name))
+            value = getattr(self, name)
+            if value is None:  # an optional field left out
+                continue
+            rule.check(name, value)
+            if name in scalar and is_concrete(value) and np.ndim(value) != 0:
+                raise ValueError(
+                    f"parameter {name!r} must be a single number, got shape {np.shape(value)} "
+                    "(to evaluate many values, sweep it: jaxtow.sweep, or jax.vmap over "
+                    "jaxtow.with_parameters)"
+                )
 
     def checks(self) -> list:
         """Traced ``(predicate, message)`` checks of this module's fields and of every
@@ -137,6 +154,24 @@ class Checked(eqx.Module):
             for child in _children(getattr(self, f.name, None)):
                 out += child.checks()
         return out
+
+
+def check_now(module: Checked) -> None:
+    """Eager: raise a `ValueError` with the first failing rule of a concrete module and every
+    module inside it (one edited with `eqx.tree_at`, which bypasses the constructor's check;
+    nothing is checked for traced values, which `guard` covers)."""
+    for pred, msg in module.checks():
+        if is_concrete(pred) and bool(pred):
+            raise ValueError(msg)
+
+
+def check_type(name: str, value, cls: type) -> None:
+    """Eager: a `TypeError` naming ``name`` unless ``value`` is a ``cls``."""
+    if not isinstance(value, cls):
+        raise TypeError(
+            f"parameter {name!r} must be a {cls.__module__.split('._')[0]}.{cls.__name__}, "
+            f"got {type(value).__name__} {value!r}"
+        )
 
 
 # eager checks of function arguments, from the same rules

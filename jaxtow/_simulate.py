@@ -23,6 +23,7 @@ from jaxtyping import Array, Bool, Float, Int
 
 from ._dynamics import TowModel, all_valid, validity, vector_field
 from ._parameters import check_values, with_parameters
+from ._rules import check_now
 from ._stability import eigenvalues
 
 SOLVERS = ("tsit5", "kvaerno5")
@@ -151,6 +152,7 @@ def simulate(
     if float(y0[3]) <= 0:
         raise ValueError("parameter 'y0' must have a positive towline length l'")
     ts = _save_grid(t0, t1, n_save)
+    check_now(model)
     if solver == "auto":
         solver = choose_solver(model, y0, t1, t0)
     return _run_jit(model, y0, ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps)
@@ -188,6 +190,7 @@ def simulate_batch(
             raise ValueError(f"params[{k!r}] must have shape ({y0s.shape[0]},), got {v.shape}")
         check_values(model, k, np.asarray(v))
     ts = _save_grid(t0, t1, n_save)
+    check_now(model)
     return _batch_jit(
         model,
         y0s,

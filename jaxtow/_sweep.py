@@ -14,8 +14,10 @@ structure.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
+import os
 from collections.abc import Callable, Mapping
 
 import jax
@@ -137,6 +139,138 @@ def make_specialised_kernel(model: TowModel, **kernel_options):
     return lambda _model, p: fixed(p)
 
 
+@dataclasses.dataclass(frozen=True)
+class SweepPlan:
+    """A checked sweep, cut into chunks: what `sweep_arrays` evaluates chunk by chunk and
+    `jaxtow.distributed` hands out as tasks (one chunk a task, the same kernel)."""
+
+    names: tuple
+    axes: tuple  # the 1-D value array of each swept parameter
+    chunk: int  # points per kernel call (the last chunk is padded with a valid point)
+    nchunks: int
+    options: dict  # the kernel's static options (`point_kernel`)
+    eigenvalues: bool
+    ndev: int
+
+    @property
+    def shape(self) -> tuple:
+        return tuple(a.size for a in self.axes)
+
+    @property
+    def npts(self) -> int:
+        return math.prod(self.shape)
+
+    def bounds(self, c: int) -> tuple[int, int]:
+        return c * self.chunk, min((c + 1) * self.chunk, self.npts)
+
+    def chunk_params(self, c: int) -> dict:
+        """Chunk ``c``'s parameter values, padded to the chunk size (NumPy arrays)."""
+        lo, hi = self.bounds(c)
+        idx = np.arange(lo, lo + self.chunk)
+        idx = np.where(idx < hi, idx, lo)  # pad the last chunk with a valid point
+        # the Cartesian product's points of this chunk only: memory does not grow with the grid
+        where = np.unravel_index(idx, self.shape)
+        return {n: a[i] for n, a, i in zip(self.names, self.axes, where)}
+
+    def trim(self, c: int, result: dict) -> dict:
+        """A kernel's output for chunk ``c`` as NumPy arrays, padding removed."""
+        lo, hi = self.bounds(c)
+        return {k: np.asarray(v[: hi - lo]) for k, v in result.items()}
+
+    def assemble(self, pieces: list) -> dict:
+        """The chunks' outputs, in order, as arrays shaped ``grid_shape + (slots[, 6])``."""
+        out = {k: np.concatenate([p[k] for p in pieces]) for k in pieces[0]}
+        out = {k: v.reshape(self.shape + v.shape[1:]) for k, v in out.items()}
+        out["_coords"] = dict(zip(self.names, self.axes))
+        out["_eig_method"] = self.options["eig_method"]
+        return out
+
+
+#: Bytes of results a grid point takes in `sweep_arrays` (4 equilibrium slots, about 20
+#: outputs each, float64 and bool): an estimate for the up-front memory check.
+BYTES_PER_POINT = 700
+
+
+def _check_memory(plan: SweepPlan) -> None:
+    """Refuse, before anything runs, a grid whose results cannot fit in this machine's
+    memory (`sweep_arrays` holds them all; `jaxtow.distributed.sweep` does not)."""
+    need = plan.npts * BYTES_PER_POINT
+    try:
+        have = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+    except (AttributeError, ValueError, OSError):  # not POSIX
+        return
+    if need > have:
+        raise ValueError(
+            f"parameter 'grid': {plan.npts:.3g} points need about {need / 2**30:.3g} GiB of "
+            f"results, more than this machine's {have / 2**30:.3g} GiB; sweep a smaller grid, "
+            "or use jaxtow.distributed.sweep, which keeps the results in chunks"
+        )
+
+
+def plan_sweep(
+    model: TowModel,
+    grid: Mapping[str, np.ndarray],
+    *,
+    method: str = "numerical",
+    chunk_size: int = 16384,
+    ndev: int = 1,
+    on_cpu: bool = True,
+    n_grid: int = 2001,
+    max_roots: int = 4,
+    psi_range: float = math.pi / 2,
+    routh_hurwitz: bool = True,
+    eig_method: str | None = None,
+    eigenvalues: bool = False,
+) -> SweepPlan:
+    """Check ``grid`` against the model's rules and cut it into chunks (see `sweep_arrays`)."""
+    if not grid:
+        raise ValueError("parameter 'grid' must name at least one parameter")
+    names = list(grid)
+    axes = []
+    for n in names:
+        try:
+            vals = np.atleast_1d(np.asarray(grid[n], dtype=float))
+        except (TypeError, ValueError):
+            raise ValueError(f"grid values for {n!r} must be numbers, got {grid[n]!r}") from None
+        if vals.ndim != 1 or vals.size == 0:
+            raise ValueError(f"grid values for {n!r} must be a non-empty 1-D array")
+        check_values(model, n, vals)
+        axes.append(vals)
+    if int(chunk_size) < 1:
+        raise ValueError(f"parameter 'chunk_size' must be >= 1, got {chunk_size}")
+    npts = math.prod(a.size for a in axes)
+    if eig_method is None:
+        if not eigenvalues:
+            eig_method = "routh"
+        else:
+            eig_method = "polynomial" if (ndev > 1 and on_cpu) else "lapack"
+    elif eigenvalues and eig_method not in EIG_METHODS:
+        raise ValueError(
+            f"eigenvalues=True needs parameter 'eig_method' in {EIG_METHODS}, got {eig_method!r}"
+        )
+    # Round small grids up to a power of two so that sweeps of similar size share a
+    # compiled kernel (padding points repeat a valid point and are discarded).
+    chunk = max(ndev, min(int(chunk_size), 1 << max(npts - 1, 1).bit_length()))
+    chunk = int(math.ceil(chunk / ndev) * ndev)
+    options = dict(
+        method=method,
+        n_grid=n_grid,
+        max_roots=max_roots,
+        psi_range=psi_range,
+        routh_hurwitz=routh_hurwitz,
+        eig_method=eig_method,
+    )
+    return SweepPlan(
+        names=tuple(names),
+        axes=tuple(axes),
+        chunk=chunk,
+        nchunks=int(math.ceil(npts / chunk)),
+        options=options,
+        eigenvalues=bool(eigenvalues),
+        ndev=ndev,
+    )
+
+
 def sweep_arrays(
     model: TowModel,
     grid: Mapping[str, np.ndarray],
@@ -171,44 +305,25 @@ def sweep_arrays(
     ``checkpoint``: a folder where each finished chunk is saved as it completes
     (`jaxtow.io.checkpoint`); a sweep interrupted and run again with the same folder, model,
     grid and options computes only the chunks that are missing.
+    To spread the chunks over several processes or machines, see `jaxtow.distributed`.
     """
-    if not grid:
-        raise ValueError("parameter 'grid' must name at least one parameter")
-    names = list(grid)
-    axes = []
-    for n in names:
-        vals = np.atleast_1d(np.asarray(grid[n], dtype=float))
-        if vals.ndim != 1 or vals.size == 0:
-            raise ValueError(f"grid values for {n!r} must be a non-empty 1-D array")
-        check_values(model, n, vals)
-        axes.append(vals)
-    shape = tuple(a.size for a in axes)
-    flat = [m.ravel() for m in np.meshgrid(*axes, indexing="ij")]
-    npts = flat[0].size
     mesh, ndev = _mesh(devices)
-    if eig_method is None:
-        on_cpu = mesh.devices.flat[0].platform == "cpu"
-        if not eigenvalues:
-            eig_method = "routh"
-        else:
-            eig_method = "polynomial" if (ndev > 1 and on_cpu) else "lapack"
-    elif eigenvalues and eig_method not in EIG_METHODS:
-        raise ValueError(
-            f"eigenvalues=True needs parameter 'eig_method' in {EIG_METHODS}, got {eig_method!r}"
-        )
-    # Round small grids up to a power of two so that sweeps of similar size share a
-    # compiled kernel (padding points repeat a valid point and are discarded).
-    chunk = max(ndev, min(int(chunk_size), 1 << max(npts - 1, 1).bit_length()))
-    chunk = int(math.ceil(chunk / ndev) * ndev)
-    nchunks = int(math.ceil(npts / chunk))
-    options = dict(
+    plan = plan_sweep(
+        model,
+        grid,
         method=method,
+        chunk_size=chunk_size,
+        ndev=ndev,
+        on_cpu=mesh.devices.flat[0].platform == "cpu",
         n_grid=n_grid,
         max_roots=max_roots,
         psi_range=psi_range,
         routh_hurwitz=routh_hurwitz,
         eig_method=eig_method,
+        eigenvalues=eigenvalues,
     )
+    _check_memory(plan)
+    options = plan.options
     user_kernel = kernel is not None
     if kernel is None:
         kernel = (
@@ -223,28 +338,22 @@ def sweep_arrays(
         opts = dict(
             options, eigenvalues=eigenvalues, user_kernel=user_kernel, specialise=specialise
         )
-        store = ChunkStore(checkpoint, fingerprint(model, names, axes, chunk, opts), nchunks)
+        store = ChunkStore(
+            checkpoint, fingerprint(model, plan.names, plan.axes, plan.chunk, opts), plan.nchunks
+        )
     sharding = NamedSharding(mesh, P("points"))
-    bar = Progress(nchunks, label="sweep", enabled=progress)
+    bar = Progress(plan.nchunks, label="sweep", enabled=progress)
     pieces = []
-    for c in range(nchunks):  # chunks, not grid points: each chunk is one vmapped call
-        lo, hi = c * chunk, min((c + 1) * chunk, npts)
+    for c in range(plan.nchunks):  # chunks, not grid points: each chunk is one vmapped call
         piece = None if store is None else store.get(c)
         if piece is None:
-            idx = np.arange(lo, lo + chunk)
-            idx = np.where(idx < hi, idx, lo)  # pad the last chunk with a valid point
-            params = {n: jax.device_put(f[idx], sharding) for n, f in zip(names, flat)}
-            res = jax.device_get(kernel(model, params))
-            piece = {k: np.asarray(v[: hi - lo]) for k, v in res.items()}
+            params = {n: jax.device_put(v, sharding) for n, v in plan.chunk_params(c).items()}
+            piece = plan.trim(c, jax.device_get(kernel(model, params)))
             if store is not None:
                 store.put(c, piece)
         pieces.append(piece)
         bar.update()
-    out = {k: np.concatenate([p[k] for p in pieces]) for k in pieces[0]}
-    out = {k: v.reshape(shape + v.shape[1:]) for k, v in out.items()}
-    out["_coords"] = dict(zip(names, axes))
-    out["_eig_method"] = eig_method
-    return out
+    return plan.assemble(pieces)
 
 
 def sweep(model: TowModel, grid: Mapping[str, np.ndarray], **options):

@@ -245,3 +245,194 @@ def test_an_interrupted_sweep_resumes_from_its_checkpoint(tmp_path, monkeypatch,
         jt.sweep_arrays(
             model, {**grid, "l0": np.linspace(1.0, 2.0, 4)}, chunk_size=8, checkpoint=ck
         )
+
+
+def test_cli_options_are_checked_before_anything_runs(capsys):
+    """Option values a user can mistype: refused with a one-line message naming the option."""
+    assert "--u-tug: expected a finite number > 0" in _cli_error(
+        ["equilibria", "--u-tug", "0"], capsys
+    )
+    assert "--param xp: N must be a whole number of points, got 'abc'" in _cli_error(
+        ["map", "--param", "xp", "0", ".5", "abc"], capsys
+    )
+    assert "--panel-size: expected a finite number > 0" in _cli_error(
+        ["bem", "barge2a", "--panel-size", "0"], capsys
+    )
+    assert "--base 'foo' is not a drift method" in _cli_error(["drift", "--base", "foo"], capsys)
+
+
+def test_cli_errors_are_one_line_without_a_traceback(monkeypatch, capsys):
+    """An error from inside a command (here: a check made under jit, which JAX wraps in a
+    long runtime error) reaches the user as one line naming the parameter; the traceback is
+    there on request."""
+    import equinox as eqx
+
+    import jaxtow.cli.equilibria as E
+    from jaxtow.cli import error_message
+
+    def failing(args):
+        jax.jit(lambda x: eqx.error_if(x, x < 0, "parameter 'EA' must be > 0 and finite"))(-1.0)
+
+    monkeypatch.setattr(E, "cmd_equilibria", failing)
+    message = _cli_error(["equilibria"], capsys)
+    assert message.splitlines()[0] == (
+        "jaxtow equilibria: error: parameter 'EA' must be > 0 and finite"
+    )
+    assert "Traceback" not in message
+    monkeypatch.setenv("JAXTOW_TRACEBACK", "1")
+    with pytest.raises(Exception) as e:
+        jt.cli.main(["equilibria"])
+    assert error_message(e.value) == "parameter 'EA' must be > 0 and finite"
+
+
+def test_tug_speed_must_be_positive(model):
+    """A zero tug speed made EA' infinite, and the error then named EA."""
+    with pytest.raises(ValueError, match="'u_tug' must be > 0"):
+        jt.at_tug_speed(model, 0.0)
+    with pytest.raises(Exception, match="'u_tug' must be > 0"):
+        jax.jit(lambda u: jt.at_tug_speed(model, u).towline.EA)(-1.0)
+    assert float(jt.at_tug_speed(model, 2 * 2.0).towline.EA) > 0
+
+
+def test_parameters_of_the_wrong_kind_are_named(model):
+    with pytest.raises(ValueError, match="parameter 'l0' must be a number, got 'abc'"):
+        jt.Towline(l0="abc", xp=0.4, EA=10.0)
+    with pytest.raises(ValueError, match="parameter 'l0' must be a single number, got shape"):
+        jt.Towline(l0=np.array([1.0, 2.0]), xp=0.4, EA=10.0)
+    with pytest.raises(ValueError, match="grid values for 'l0' must be numbers"):
+        jt.sweep_arrays(model, {"l0": ["a", "b"]})
+    with pytest.raises(ValueError, match="'chunk_size' must be >= 1"):
+        jt.sweep_arrays(model, {"l0": [1.0, 2.0]}, chunk_size=0)
+    with pytest.raises(TypeError, match="parameter 'qtf' must be a jaxtow.drift.QTF"):
+        jt.forces.WaveDriftForce(qtf="x", omega=1.0, zeta_a=1.0, scales=P.barge2_scales())
+    with pytest.raises(ValueError, match="parameter 'hs' must be a number"):
+        jt.resistance.SeaState(hs="x", tp=8.0)
+    assert float(jt.resistance.SeaState(hs=0.0, tp=8.0).hs) == 0.0  # calm water, as documented
+    box = np.array([[0, 0], [10, 0], [10, 5], [0, 5], [0, 0]], float)
+    with pytest.raises(ValueError, match="parameter 'draft' must be > 0"):
+        jt.drift.waterline(box, draft=float("nan"))
+
+
+def test_a_grid_too_large_for_memory_is_refused_up_front(model):
+    """10^12 points: refused before anything is allocated, naming the grid."""
+    huge = {"l0": np.linspace(1, 2, 10**6), "xp": np.linspace(0.1, 0.5, 10**6)}
+    with pytest.raises(ValueError, match="parameter 'grid': 1e\\+12 points need about"):
+        jt.sweep_arrays(model, huge)
+    # the chunk plan holds the axes, not the product: a chunk is made on demand
+    from jaxtow._sweep import plan_sweep
+
+    plan = plan_sweep(model, huge, chunk_size=4)
+    assert plan.npts == 10**12 and plan.nchunks == 25 * 10**10
+    last = plan.chunk_params(plan.nchunks - 1)
+    np.testing.assert_array_equal(last["l0"], [2.0] * 4)
+    np.testing.assert_array_equal(last["xp"], huge["xp"][-4:])
+
+
+def test_eager_entry_points_check_a_model_edited_past_its_constructor(model):
+    """`eqx.tree_at` bypasses the constructor; `equilibria` and `simulate` used to fail deep
+    inside the compiled call ("INTERNAL: CpuCallback error")."""
+    import equinox as eqx
+
+    bad = eqx.tree_at(lambda m: m.towline.EA, model, jnp.asarray(-1.0))
+    with pytest.raises(ValueError, match="parameter 'EA' must be > 0"):
+        jt.equilibria(bad)
+    with pytest.raises(ValueError, match="parameter 'EA' must be > 0"):
+        jt.simulate(bad, jt.initial_state(model, psi0=0.0, y0=0.1), t1=1.0)
+    with pytest.raises(ValueError, match="parameter 'max_roots' must be >= 1"):
+        jt.equilibria(model, max_roots=0)
+
+
+def test_a_tow_turned_stern_first_is_flagged(model):
+    y = np.array([1.0, 0.0, 0.0, 2.5, 0.0, 0.0])
+    assert bool(jt.validity(model, y)["moving_ahead"])
+    y[0], y[5] = -0.5, np.radians(200.0)  # a wild fishtail, turned round
+    flags = jt.validity(model, y)
+    assert not bool(flags["moving_ahead"]) and not bool(jt.all_valid(flags))
+
+
+_INTERRUPTIBLE_MAP = r"""
+import sys, time
+from pathlib import Path
+stage, out = sys.argv[1], sys.argv[2]
+marker = Path(out).parent / f"{stage}.ready"
+if stage == "sweep":  # hold the sweep after its first chunk is saved
+    from jaxtow.io import checkpoint
+    real_put = checkpoint.ChunkStore.put
+    def put(self, c, arrays):
+        real_put(self, c, arrays)
+        if c == 0:
+            marker.touch()
+            time.sleep(60)
+    checkpoint.ChunkStore.put = put
+elif stage == "write":  # hold the final NetCDF write, its temporary file written
+    import xarray as xr
+    real_write = xr.Dataset.to_netcdf
+    def to_netcdf(self, *a, **k):
+        result = real_write(self, *a, **k)
+        assert list(Path(out).glob(".*.tmp")), "the write goes to a temporary file"
+        marker.touch()
+        time.sleep(3)
+        return result
+    xr.Dataset.to_netcdf = to_netcdf
+from jaxtow.cli import main
+sys.exit(main(["map", "--param", "l0", "1", "3", "5", "--chunk-size", "2", "--quiet", "--out", out]))
+"""
+
+
+@pytest.mark.slow  # three processes, each importing jaxtow (about a minute)
+def test_a_map_interrupted_by_sigint_resumes_and_never_leaves_a_partial_file(tmp_path):
+    """Ctrl-C (SIGINT) in the middle of a sweep, then during the final write: each run exits
+    at once with a message saying what was kept, no file is left under the final name,
+    and the run that completes gives the same result as an uninterrupted sweep."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    out = tmp_path / "out"
+    script = tmp_path / "run.py"
+    script.write_text(_INTERRUPTIBLE_MAP)
+    env = dict(os.environ, JAXTOW_COMPILE_CACHE=str(tmp_path / "xla"))
+    final = out / "barge2a_l0.nc"
+
+    def interrupted(stage):
+        proc = subprocess.Popen(
+            [sys.executable, str(script), stage, str(out)],
+            env=env,
+            stderr=subprocess.PIPE,
+            text=True,
+        )
+        marker = tmp_path / f"{stage}.ready"
+        deadline = time.monotonic() + 300
+        while not marker.exists():
+            assert proc.poll() is None, proc.stderr.read() if proc.stderr else ""
+            assert time.monotonic() < deadline, "the run never reached the point to interrupt"
+            time.sleep(0.1)
+        sent = time.monotonic()
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=30)  # a deadlock fails here
+        return proc.returncode, time.monotonic() - sent, err
+
+    rc, took, err = interrupted("sweep")
+    assert rc == 130 and "interrupted" in err and "resumes" in err, err
+    assert took < 10
+    chunks = sorted(p.name for p in (out / ".barge2a_l0.chunks").glob("chunk_*.npz"))
+    assert chunks == ["chunk_00000.npz"]
+    assert not final.exists()
+
+    rc, took, err = interrupted("write")  # resumes the sweep, then is stopped while writing
+    assert rc == 130 and "interrupted" in err, err
+    assert took < 10  # the held interrupt ends the run when the write call returns
+    assert not final.exists()
+    assert not list(out.glob(".*.tmp")) and not list(out.glob("*.nc"))
+
+    done = subprocess.run(
+        [sys.executable, str(script), "plain", str(out)], env=env, capture_output=True, text=True
+    )
+    assert done.returncode == 0, done.stderr
+    got = jt.io.load_dataset(final)
+    ref = jt.sweep(jt.tow.load("barge2a").model(), {"l0": np.linspace(1, 3, 5)}, chunk_size=2)
+    for k in ("psi", "max_real", "valid", "stability", "tension"):
+        np.testing.assert_array_equal(got[k].values, ref[k].values, err_msg=k)
+    assert not (out / ".barge2a_l0.chunks").exists()

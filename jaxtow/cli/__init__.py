@@ -28,6 +28,7 @@ Run ``jaxtow SUBCOMMAND --help`` for the options.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 
 from . import (
@@ -95,13 +96,43 @@ def main(argv=None) -> int:
             raise SystemExit(f"error: {e}") from None
 
     matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
-    lock = _lock_output(getattr(args, "out", None))
+    out = getattr(args, "out", None)
+    lock = _lock_output(out)
     try:
         args.func(args)
+    except KeyboardInterrupt:
+        kept = (
+            f" Files already written in {out} are complete (each is written under a temporary "
+            "name and renamed when done); `jaxtow map` keeps its finished chunks and resumes "
+            "from them when run again."
+            if out is not None
+            else ""
+        )
+        print(f"\njaxtow {args.command}: interrupted.{kept}", file=sys.stderr)
+        raise SystemExit(130) from None
+    except (ValueError, TypeError, KeyError, OSError, RuntimeError) as e:
+        if os.environ.get("JAXTOW_TRACEBACK", "") not in ("", "0"):
+            raise
+        raise SystemExit(
+            f"jaxtow {args.command}: error: {error_message(e)}\n"
+            "(JAXTOW_TRACEBACK=1 shows where it came from)"
+        ) from None
     finally:
         if lock is not None:
             lock.close()
     return 0
+
+
+def error_message(e: BaseException) -> str:
+    """One line for an error: the message of a check made under jit (`equinox.error_if`,
+    which JAX wraps in a runtime error with the callback's traceback) or the first line of
+    any other error's message."""
+    text = str(e.args[0]) if isinstance(e, KeyError) and e.args else str(e)
+    lines = [ln.strip() for ln in text.splitlines() if ln.strip()]
+    for ln in lines:
+        if "EquinoxRuntimeError: " in ln:
+            return ln.split("EquinoxRuntimeError: ", 1)[1]
+    return lines[0] if lines else type(e).__name__
 
 
 def _lock_output(out):

@@ -10,11 +10,25 @@ import numpy as np
 
 
 def _grid(spec, name):
+    """LO HI N from the command line: N points from LO to HI (messages name the option)."""
     lo, hi, n = spec
-    n = int(n)
+    try:
+        lo, hi = float(lo), float(hi)
+    except ValueError:
+        raise SystemExit(
+            f"error: --{name}: LO and HI must be numbers, got {spec[0]!r} {spec[1]!r}"
+        ) from None
+    try:
+        n = int(n)
+    except ValueError:
+        raise SystemExit(
+            f"error: --{name}: N must be a whole number of points, got {n!r}"
+        ) from None
     if n < 1:
-        raise SystemExit(f"error: --{name} needs a positive number of points")
-    return np.linspace(float(lo), float(hi), n)
+        raise SystemExit(f"error: --{name} needs a positive number of points, got {n}")
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        raise SystemExit(f"error: --{name}: LO and HI must be finite, got {lo} {hi}")
+    return np.linspace(lo, hi, n)
 
 
 def _parse_sets(items):
@@ -106,7 +120,7 @@ def _tow_option(p, multiple: bool = False, default=("barge2a",)):
 def _common(p):
     p.add_argument(
         "--u-tug",
-        type=float,
+        type=positive_float,
         default=None,
         help="tug speed U_tug [m/s]; rescales EA' (default: the tow file's speed)",
     )

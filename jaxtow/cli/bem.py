@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from .._units import RHO_SEA, G
-from ._common import positive_int
+from ._common import positive_float, positive_int
 from ._config import config_dispatch, read_config as _read_config
 
 BUILTIN = {"barge1": "bem_barge1.toml", "barge2": "bem_barge2.toml"}
@@ -199,7 +199,9 @@ def add_parser(sub):
         "barge1, barge2a, barge2b (print with --show-config)",
     )
     r.add_argument("--out", default="bem_out", help="output folder (default bem_out)")
-    r.add_argument("--panel-size", type=float, default=None, help="override [hull] panel_size [m]")
+    r.add_argument(
+        "--panel-size", type=positive_float, default=None, help="override [hull] panel_size [m]"
+    )
     r.add_argument(
         "--n-omega", type=positive_int, default=None, help="override the number of frequencies"
     )

@@ -61,6 +61,10 @@ def cmd_drift(args):
     from ..plotting.calm import save
     from ..plotting.drift import plot_drift_methods, plot_irregular_methods
 
+    if args.base not in jt.drift.METHODS:
+        raise SystemExit(
+            f"error: --base {args.base!r} is not a drift method; choose from {sorted(jt.drift.METHODS)}"
+        )
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     wl = _waterline(args)

@@ -44,6 +44,8 @@ class WaveDriftForce(AbstractExternalForce):
 
     def __check_init__(self):
         check_form(self.form)
+        V.check_type("qtf", self.qtf, QTF)
+        V.check_type("scales", self.scales, Scales)
 
     def dimensional(self, y: Float[Array, "6"]) -> Float[Array, "3"]:
         """(Fx [N], Fy [N], Nz [N·m]) at non-dimensional state y."""
@@ -87,6 +89,8 @@ class IrregularWaveDriftForce(AbstractExternalForce):
 
     def __check_init__(self):
         check_form(self.form)
+        V.check_type("qtf", self.qtf, QTF)
+        V.check_type("scales", self.scales, Scales)
         from ..waves._spectra import check_ascending
 
         check_ascending(self.omega)

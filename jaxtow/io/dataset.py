@@ -37,6 +37,7 @@ VARIABLES = {
 #: name → (units, long_name) of the physics' validity variables (``validity_<name>``).
 VALIDITY_VARIABLES = {
     "line_taut": ("1", "towline carries tension (not slack)"),
+    "moving_ahead": ("1", "the hull moves bow first through the water (u' > 0)"),
     "froude": ("1", "Froude number U/sqrt(gL) of the vessel"),
     "froude_ok": ("1", "Froude number below 0.15 (drift methods' range)"),
     "separation_ratio": ("1", "U/(omega zeta_a) (regular) or U/(omega_p Hs/2) (irregular)"),

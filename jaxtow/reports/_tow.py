@@ -28,6 +28,8 @@ VERDICTS = {
 #: The validity flags in plain words (the report's warnings).
 VALIDITY_WORDS = {
     "line_taut": "the towline goes slack",
+    "moving_ahead": "the barge turns stern first (u' <= 0: outside the manoeuvring model, "
+    "whose derivatives are for ahead motion)",
     "froude_ok": "the Froude number is 0.15 or more (the drift theory is for slow ships)",
     "no_separation": "the tow speed exceeds the waves' orbital velocity (U >= omega_p Hs/2): "
     "the forward-speed drift theory assumes the flow does not separate",

@@ -10,7 +10,10 @@ from ..waves._spectra import GAMMA_RULE
 
 
 def _float(x):
-    return jnp.asarray(x, dtype=float)
+    try:
+        return jnp.asarray(x, dtype=float)
+    except (TypeError, ValueError):
+        return x  # not numeric: left for the eager check, which names the field
 
 
 class SeaState(V.Checked):
