@@ -16,6 +16,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import sys
 import time
 
@@ -25,16 +26,6 @@ sys.path.insert(0, os.path.dirname(__file__))
 from baseline_numpy import stability_map  # noqa: E402
 
 import jaxtow as jt  # noqa: E402
-from jaxtow._sweep import make_batched_kernel, plan_sweep  # noqa: E402
-
-
-def _compile_on_worker(model, grid, chunk, options):
-    """Compile (and run once) the chunk kernel as a task calls it; its wall time."""
-    plan = plan_sweep(model, grid, chunk_size=chunk, **options)
-    t = time.perf_counter()
-    kernel = make_batched_kernel(**plan.options)
-    np.asarray(kernel(model, plan.chunk_params(0))["max_real"])
-    return time.perf_counter() - t
 
 
 def _compile_here(model, grid, chunk, options):
@@ -53,21 +44,47 @@ def main(argv=None):
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--chunk", type=int, default=65536)
     ap.add_argument("--numpy-points", type=int, default=20_000)
+    ap.add_argument(
+        "--model",
+        choices=("calm", "waves"),
+        default="calm",
+        help="calm: the analytic calm map; waves: the (l0', ω) map of Barge 2a in regular head "
+        "waves (the shipped near-field database; about 20x the work a point)",
+    )
     ap.add_argument("--json", default=None, help="write the results here")
+    ap.add_argument("--md", default=None, help="write the results as a Markdown table here")
     args = ap.parse_args(argv)
     from dask.distributed import Client, LocalCluster
 
-    model = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.presets.default_towline())
     side = int(round(np.sqrt(args.points)))
-    grid = {"xp": np.linspace(0.0, 0.6, side), "l0": np.linspace(0.2, 2.5, args.points // side)}
+    if args.model == "calm":
+        model = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.presets.default_towline())
+        grid = {
+            "xp": np.linspace(0.0, 0.6, side),
+            "l0": np.linspace(0.2, 2.5, args.points // side),
+        }
+        options = dict(method="analytic")
+    else:
+        from jaxtow.study import barge2_wave_model
+
+        model = barge2_wave_model("2a", l0=1.0, xp=0.5, omega=1.0, zeta_a=1.25)
+        grid = {
+            "xp": np.linspace(0.1, 0.9, side),
+            "l0": np.linspace(0.3, 3.0, args.points // side),
+        }
+        options = dict(method="numerical", n_grid=401)
     npts = grid["xp"].size * grid["l0"].size
-    options = dict(method="analytic")
 
     compile_here = _compile_here(model, grid, args.chunk, options)
-    t = time.perf_counter()
+    r0, t = resource.getrusage(resource.RUSAGE_SELF), time.perf_counter()
     ref = jt.sweep(model, grid, chunk_size=args.chunk, **options)
     t_one = time.perf_counter() - t
-    print(f"one process: compile + first chunk {compile_here:.1f} s; {npts} points {t_one:.2f} s")
+    r1 = resource.getrusage(resource.RUSAGE_SELF)
+    cores_one = (r1.ru_utime - r0.ru_utime + r1.ru_stime - r0.ru_stime) / t_one
+    print(
+        f"one process: compile + first chunk {compile_here:.1f} s; {npts} points {t_one:.2f} s, "
+        f"using {cores_one:.2f} cores on average (XLA's own threads)"
+    )
 
     with (
         LocalCluster(
@@ -76,7 +93,7 @@ def main(argv=None):
         Client(cluster) as client,
     ):
         t = time.perf_counter()
-        client.run(_compile_on_worker, model, grid, args.chunk, options)  # on every worker
+        jt.distributed.compile_on_workers(client, model, grid, chunk_size=args.chunk, **options)
         compile_workers = time.perf_counter() - t
         t = time.perf_counter()
         ds = jt.distributed.sweep(model, grid, client=client, chunk_size=args.chunk, **options)
@@ -91,12 +108,16 @@ def main(argv=None):
         for k in ref.data_vars
     )
 
-    params = {n: float(getattr(model.vessel, n)) for n in jt.VESSEL_PARAMETERS}
-    params["EA"] = float(model.towline.EA)
-    xp, l0 = (m.ravel()[: args.numpy_points] for m in np.meshgrid(*grid.values(), indexing="ij"))
-    t = time.perf_counter()
-    stability_map(params, xp, l0)
-    us_numpy = (time.perf_counter() - t) / xp.size * 1e6
+    us_numpy, n_numpy = float("nan"), 0
+    if args.model == "calm":  # the NumPy/SciPy loop of the same work (benchmarks/baseline_numpy)
+        params = {n: float(getattr(model.vessel, n)) for n in jt.VESSEL_PARAMETERS}
+        params["EA"] = float(model.towline.EA)
+        axes = np.meshgrid(*grid.values(), indexing="ij")
+        xp, l0 = (m.ravel()[: args.numpy_points] for m in axes)
+        t = time.perf_counter()
+        stability_map(params, xp, l0)
+        n_numpy = int(xp.size)
+        us_numpy = (time.perf_counter() - t) / n_numpy * 1e6
 
     res = dict(
         points=npts,
@@ -111,7 +132,10 @@ def main(argv=None):
         us_per_point_one_process=t_one / npts * 1e6,
         us_per_point_dask=t_dask / npts * 1e6,
         us_per_point_numpy=us_numpy,
+        numpy_points=n_numpy,
+        model=args.model,
         cpu_count=os.cpu_count(),
+        cores_used_one_process=cores_one,
     )
     print(
         f"speed-up of Dask over one process: {res['speedup']:.2f}x "
@@ -122,7 +146,32 @@ def main(argv=None):
     if args.json:
         with open(args.json, "w") as f:
             json.dump(res, f, indent=2)
+    if args.md:
+        with open(args.md, "w") as f:
+            f.write(markdown(res))
     return res
+
+
+def markdown(res: dict) -> str:
+    return (
+        f"| {res['model']} map, {res['points']} points, {res['cpu_count']} cores | wall time | µs a point | "
+        "compile |\n|---|---|---|---|\n"
+        f"| one process | {res['one_process_s']:.2f} s | {res['us_per_point_one_process']:.2f} | "
+        f"{res['compile_one_process_s']:.1f} s |\n"
+        f"| Dask, {res['workers']} workers | {res['dask_s']:.2f} s | "
+        f"{res['us_per_point_dask']:.2f} | {res['compile_workers_s']:.1f} s (each worker) |\n"
+        + (
+            f"| NumPy/SciPy loop (first {res['numpy_points']} points) | | "
+            f"{res['us_per_point_numpy']:.0f} | |\n"
+            if res["numpy_points"]
+            else ""
+        )
+        + "\n"
+        f"Speed-up of Dask over one process: **{res['speedup']:.2f}x**; results identical: "
+        f"{res['identical']}. Chunks of {res['chunk']} points. The one process used "
+        f"{res['cores_used_one_process']:.2f} of the {res['cpu_count']} cores on average "
+        "(XLA runs a vmapped kernel on its own threads).\n"
+    )
 
 
 if __name__ == "__main__":

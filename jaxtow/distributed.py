@@ -20,6 +20,9 @@ the right setting: a worker's chunk already keeps its core busy.
 
 from __future__ import annotations
 
+import operator
+import pickle
+import time
 from collections.abc import Mapping
 
 import jax
@@ -42,17 +45,25 @@ def _dask():
     return dask, da
 
 
-def _evaluate_chunk(model, params: dict, options: dict, specialise: bool) -> dict:
-    """One task: a chunk through the jitted sweep kernel (compiled once per process and
-    option set; a specialised kernel once per process and model)."""
+def _canonical(model):
+    """The model with NumPy leaves, however it reached this process: a model is serialised
+    differently as a task's argument and through ``client.run``, and the array types (JAX or
+    NumPy, weak or strong) are part of the compiled kernel's cache key."""
+    return jax.tree.map(
+        lambda x: np.asarray(x) if isinstance(x, (jax.Array, np.ndarray)) else x, model
+    )
+
+
+def _evaluate_chunk(model, plan, c: int, specialise: bool) -> dict:
+    """One task: chunk ``c`` of the plan (its points made here from the axes) through the
+    jitted sweep kernel (compiled once per process and option set; a specialised kernel
+    once per process and model), padding removed."""
+    model = _canonical(model)
+    options = plan.options
     kernel = (
         make_specialised_kernel(model, **options) if specialise else make_batched_kernel(**options)
     )
-    return {k: np.asarray(v) for k, v in jax.device_get(kernel(model, params)).items()}
-
-
-def _trimmed(result: dict, key: str, n: int):
-    return result[key][:n]
+    return plan.trim(c, jax.device_get(kernel(model, plan.chunk_params(c))))
 
 
 def sweep(
@@ -69,7 +80,8 @@ def sweep(
 
     The grid is checked here, before any task exists (an invalid value is an error naming
     it). ``client``: a `dask.distributed.Client`; given, the tasks start on its cluster at
-    once (``client.persist``) and the Dataset's arrays are the futures of their results.
+    once (``client.persist``; this call returns when the first chunk is done) and the
+    Dataset's arrays are the futures of their results.
     Without it the Dataset stays lazy, and is computed by whichever Dask scheduler is active
     when it is computed or written. ``options``: those of `jaxtow.sweep_arrays` except
     ``devices``, ``kernel``, ``checkpoint`` and ``progress`` (a cluster's dashboard shows the
@@ -83,34 +95,71 @@ def sweep(
             raise TypeError(f"jaxtow.distributed.sweep does not take parameter {bad!r}")
     method = options.get("method", "numerical")
     plan = plan_sweep(model, grid, chunk_size=chunk_size, **options)
-    kernel = (
-        make_specialised_kernel(model, **plan.options)
-        if specialise
-        else make_batched_kernel(**plan.options)
-    )
-    # the outputs' shapes and types, without computing anything
-    spec = jax.eval_shape(kernel, model, plan.chunk_params(0))
-    model_node = dask.delayed(model, pure=True)
-    columns: dict[str, list] = {k: [] for k in spec}
-    for c in range(plan.nchunks):
-        lo, hi = plan.bounds(c)
-        result = dask.delayed(_evaluate_chunk, pure=True)(
-            model_node, plan.chunk_params(c), plan.options, specialise
+    # the model and the plan (its axes, not its points) enter the graph once, as bytes: given
+    # as objects, Dask would take the dataclasses apart and rebuild them in every task
+    model_node = dask.delayed(pickle.loads, pure=True)(pickle.dumps(model))
+    plan_node = dask.delayed(pickle.loads, pure=True)(pickle.dumps(plan))
+    results = [
+        dask.delayed(_evaluate_chunk, pure=True)(model_node, plan_node, c, specialise)
+        for c in range(plan.nchunks)
+    ]
+    if client is not None:
+        # start every task now; the outputs' shapes and types come from the first chunk's
+        # result on the cluster (tracing the kernel here would cost as much as compiling it)
+        results = client.persist(results)
+        spec = client.compute(dask.delayed(_spec)(results[0])).result()
+    else:  # lazy: the shapes and types without computing anything
+        kernel = (
+            make_specialised_kernel(model, **plan.options)
+            if specialise
+            else make_batched_kernel(**plan.options)
         )
-        for k, s in spec.items():
-            part = dask.delayed(_trimmed, pure=True)(result, k, hi - lo)
-            columns[k].append(da.from_delayed(part, (hi - lo, *s.shape[1:]), dtype=s.dtype))
+        spec = {
+            k: (v.shape[1:], v.dtype)
+            for k, v in jax.eval_shape(kernel, model, plan.chunk_params(0)).items()
+        }
+    columns: dict[str, list] = {k: [] for k in spec}
+    for c, result in enumerate(results):
+        lo, hi = plan.bounds(c)
+        for k, (shape, dtype) in spec.items():
+            part = dask.delayed(operator.getitem, pure=True)(result, k)
+            columns[k].append(da.from_delayed(part, (hi - lo, *shape), dtype=dtype))
     arrays = {}
     for k, parts in columns.items():
         flat = da.concatenate(parts, axis=0)
         arrays[k] = flat.reshape(plan.shape + flat.shape[1:], merge_chunks=True)
-    if client is not None:
-        arrays = dict(zip(arrays, client.persist(list(arrays.values()))))
     arrays["_coords"] = dict(zip(plan.names, plan.axes))
     arrays["_eig_method"] = plan.options["eig_method"]
     ds = sweep_dataset(model, arrays, method=method)
     ds.attrs["scheduler"] = "dask"
     return ds
+
+
+def _spec(result: dict) -> dict:
+    return {k: (v.shape[1:], v.dtype) for k, v in result.items()}
+
+
+def _warm(model, plan, specialise: bool) -> float:
+    t = time.perf_counter()
+    _evaluate_chunk(model, plan, 0, specialise)
+    return time.perf_counter() - t
+
+
+def compile_on_workers(
+    client,
+    model: TowModel,
+    grid: Mapping[str, np.ndarray],
+    *,
+    chunk_size: int = 16384,
+    specialise: bool = False,
+    **options,
+) -> dict:
+    """Compile the sweep kernel on every worker of ``client`` before a `sweep` with the same
+    model structure, grid chunking and options (and run its first chunk once). Returns
+    {worker address: seconds}. Without it each worker compiles on its first task."""
+    _dask()
+    plan = plan_sweep(model, grid, chunk_size=chunk_size, **options)
+    return client.run(_warm, model, plan, specialise)
 
 
 def simulate_batch(
@@ -164,4 +213,4 @@ def _simulate_slice(model, y0s, t1, params, options) -> Simulation:
     return jax.tree.map(np.asarray, jax.device_get(sim))
 
 
-__all__ = ["simulate_batch", "sweep"]
+__all__ = ["compile_on_workers", "simulate_batch", "sweep"]

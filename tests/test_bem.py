@@ -414,7 +414,7 @@ def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it():
 
 
 @needs_capytaine
-@pytest.mark.slow
+@pytest.mark.heavy  # reproduction scale: `pytest -m heavy` (not in CI's time budget)
 def test_near_field_converges_to_far_field_with_the_mesh():
     """Barge 1, 2 m and 1 m panels, the grid of benchmarks/bem_convergence.py (12 frequencies
     0.3-2.1 rad/s, headings 0/15/90 deg): the near field's relative MSE against the far field

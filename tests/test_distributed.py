@@ -28,6 +28,8 @@ def test_sweep_on_two_workers_equals_one_process_bitwise(client, model):
     # 96 points in chunks of 32: three tasks over two worker processes
     grid = {"xp": np.linspace(0.1, 0.9, 8), "l0": np.linspace(1.0, 4.0, 12)}
     ref = jt.sweep(model, grid, chunk_size=32)
+    warmed = jt.distributed.compile_on_workers(client, model, grid, chunk_size=32)
+    assert len(warmed) == 2 and all(t > 0 for t in warmed.values())
     lazy = jt.distributed.sweep(model, grid, client=client, chunk_size=32)
     assert lazy["max_real"].chunks is not None  # dask-backed until computed
     ds = lazy.compute()

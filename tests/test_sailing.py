@@ -402,7 +402,7 @@ def test_forms_shift_a_motion_peak_once_or_twice():
     assert "| synthetic | thesis |" in table
 
 
-@pytest.mark.slow
+@pytest.mark.heavy  # reproduction scale: `pytest -m heavy` (not in CI's time budget)
 def test_forms_comparison_in_the_docs_is_reproducible():
     """docs/data/sailing_forms.json (docs/model.md section 8) equals a fresh run of
     ``python benchmarks/sailing_forms.py`` on the stored panel QTFs."""

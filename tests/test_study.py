@@ -316,7 +316,7 @@ def test_claims_table_has_a_column_per_source_and_form():
     )
 
 
-@pytest.mark.slow
+@pytest.mark.heavy  # reproduction scale: `pytest -m heavy` (not in CI's time budget)
 def test_report_waves_writes_claims(tmp_path, capsys):
     """The whole report on a small grid, with two drift sources (the near field and the far
     field, which share compiled kernels; the default plan of three sources and two forms is

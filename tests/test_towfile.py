@@ -395,10 +395,19 @@ def _chromium():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["barge2a", "barge2b"])
+@pytest.mark.parametrize(
+    "name",
+    [
+        "barge2a",
+        # Barge 2b's study at its own grids is reproduction scale; the slow suite runs it on
+        # small grids (test_study_small_grids_writes_report_with_every_section)
+        pytest.param("barge2b", marks=pytest.mark.heavy),
+    ],
+)
 def test_study_builtin_and_render_in_chromium(name, tmp_path):
-    """`jaxtow study` on the built-in tow at its own grids; the report rendered in headless
-    Chromium (Debian's chromium package) to a screenshot that is not blank."""
+    """`jaxtow study` (the README's main job) on the built-in tow at its own grids; the report
+    rendered in headless Chromium (Debian's chromium package) to a screenshot that is not
+    blank."""
     main(["study", name, "--out", str(tmp_path), "--quiet"])
     report = tmp_path / f"{name}_report.html"
     check_report(report, ["drift", "map", "time_domain", "operating_point_sailing"])

@@ -2,6 +2,7 @@
 
 from .dataset import (
     load_dataset as load_dataset,
+    nan_audit as nan_audit,
     save_dataset as save_dataset,
     sweep_dataset as sweep_dataset,
 )
@@ -27,6 +28,7 @@ from .wamit import (
 
 __all__ = [
     "load_dataset",
+    "nan_audit",
     "save_dataset",
     "sweep_dataset",
     "design_dataset",

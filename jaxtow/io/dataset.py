@@ -125,6 +125,39 @@ def sweep_dataset(model, arrays: dict, *, method: str) -> xr.Dataset:
     return ds
 
 
+def nan_audit(ds: xr.Dataset) -> dict:
+    """Where a sweep Dataset's NaN come from. Per-slot floating-point outputs: ``entries``,
+    ``nan``, of which ``masked`` (a slot without an equilibrium: NaN by design),
+    ``flagged`` (a found equilibrium outside ``valid`` or ``physics_valid``, or of stability
+    code 2) and ``unexplained`` (NaN at a found, valid equilibrium with every physics flag
+    holding; per-point outputs count here too) with their ``unexplained_variables``.
+    """
+    found = ds["found"].values
+    explained = ~ds["valid"].values | ~ds["physics_valid"].values | (ds["stability"].values == 2)
+    out = dict(points=int(np.prod([ds.sizes[n] for n in ds.attrs["swept_parameters"].split(",")])))
+    out.update(entries=0, nan=0, masked=0, flagged=0, unexplained=0, unexplained_variables=[])
+    for k, v in ds.data_vars.items():
+        a = v.values
+        if a.dtype.kind != "f" or "equilibrium" not in v.dims:
+            if a.dtype.kind == "f" and np.isnan(a).any():  # per-point outputs: never NaN
+                out["unexplained"] += int(np.isnan(a).sum())
+                out["unexplained_variables"].append(k)
+            continue
+        nan = np.isnan(a)
+        f, e = found, explained
+        if a.ndim > found.ndim:  # (…, slot, mode)
+            f, e = found[..., None], explained[..., None]
+        out["entries"] += a.size
+        out["nan"] += int(nan.sum())
+        out["masked"] += int((nan & ~f).sum())
+        out["flagged"] += int((nan & f & e).sum())
+        bad = int((nan & f & ~e).sum())
+        out["unexplained"] += bad
+        if bad:
+            out["unexplained_variables"].append(k)
+    return out
+
+
 def save_dataset(ds: xr.Dataset, path) -> None:
     """Write a dataset to NetCDF (booleans stored as int8, restored by `load_dataset`).
 
