@@ -134,28 +134,29 @@ def nan_audit(ds: xr.Dataset) -> dict:
     """
     found = ds["found"].values
     explained = ~ds["valid"].values | ~ds["physics_valid"].values | (ds["stability"].values == 2)
-    out = dict(points=int(np.prod([ds.sizes[n] for n in ds.attrs["swept_parameters"].split(",")])))
-    out.update(entries=0, nan=0, masked=0, flagged=0, unexplained=0, unexplained_variables=[])
+    counts = dict(entries=0, nan=0, masked=0, flagged=0, unexplained=0)
+    variables: list[str] = []
     for k, v in ds.data_vars.items():
         a = v.values
         if a.dtype.kind != "f" or "equilibrium" not in v.dims:
             if a.dtype.kind == "f" and np.isnan(a).any():  # per-point outputs: never NaN
-                out["unexplained"] += int(np.isnan(a).sum())
-                out["unexplained_variables"].append(k)
+                counts["unexplained"] += int(np.isnan(a).sum())
+                variables.append(k)
             continue
         nan = np.isnan(a)
         f, e = found, explained
         if a.ndim > found.ndim:  # (…, slot, mode)
             f, e = found[..., None], explained[..., None]
-        out["entries"] += a.size
-        out["nan"] += int(nan.sum())
-        out["masked"] += int((nan & ~f).sum())
-        out["flagged"] += int((nan & f & e).sum())
+        counts["entries"] += a.size
+        counts["nan"] += int(nan.sum())
+        counts["masked"] += int((nan & ~f).sum())
+        counts["flagged"] += int((nan & f & e).sum())
         bad = int((nan & f & ~e).sum())
-        out["unexplained"] += bad
+        counts["unexplained"] += bad
         if bad:
-            out["unexplained_variables"].append(k)
-    return out
+            variables.append(k)
+    points = int(np.prod([ds.sizes[n] for n in ds.attrs["swept_parameters"].split(",")]))
+    return dict(points=points, **counts, unexplained_variables=variables)
 
 
 def save_dataset(ds: xr.Dataset, path) -> None:
