@@ -451,3 +451,43 @@ def test_no_unexplained_nan_in_a_wide_calm_sweep(model):
     assert a["points"] == 405
     assert a["unexplained"] == 0, a["unexplained_variables"]
     assert a["nan"] == a["masked"] + a["flagged"] > 0  # empty slots exist: the audit sees them
+
+
+def test_a_run_writes_its_manifest(tmp_path, monkeypatch):
+    """OUT/jaxtow_run.json: the command, its options, versions, the documented estimates,
+    the files written and how the run ended (finished, failed with its error, interrupted)."""
+    import json
+
+    import jaxtow.cli.map as M
+    from jaxtow.cli import main
+
+    def writes(args):
+        (tmp_path / "ok" / "result.nc").write_text("x")
+
+    monkeypatch.setattr(M, "cmd_map", writes)
+    main(["map", "--param", "l0", "1", "2", "3", "--out", str(tmp_path / "ok")])
+    run = json.loads((tmp_path / "ok" / "jaxtow_run.json").read_text())
+    assert run["status"] == "finished" and run["command"] == "map"
+    assert run["outputs"] == ["result.nc"]
+    assert run["options"]["param"] == [["l0", "1", "2", "3"]]
+    assert run["versions"]["jax"] and "EA" in run["estimates"]
+    assert run["started"] <= run["finished"]
+
+    def fails(args):
+        raise ValueError("parameter 'l0' must be > 0 and finite")
+
+    monkeypatch.setattr(M, "cmd_map", fails)
+    with pytest.raises(SystemExit):
+        main(["map", "--param", "l0", "1", "2", "3", "--out", str(tmp_path / "bad")])
+    run = json.loads((tmp_path / "bad" / "jaxtow_run.json").read_text())
+    assert run["status"] == "failed" and "'l0' must be > 0" in run["error"]
+
+    def interrupted(args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(M, "cmd_map", interrupted)
+    with pytest.raises(SystemExit) as e:
+        main(["map", "--param", "l0", "1", "2", "3", "--out", str(tmp_path / "int")])
+    assert e.value.code == 130
+    run = json.loads((tmp_path / "int" / "jaxtow_run.json").read_text())
+    assert run["status"] == "interrupted" and run["outputs"] == []

@@ -98,28 +98,44 @@ def main(argv=None) -> int:
     matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
     out = getattr(args, "out", None)
     lock = _lock_output(out)
+    manifest = None
+    if out is not None:
+        from ._manifest import Manifest
+
+        manifest = Manifest(out, args, argv)
+        manifest.start()
+    status, error = "failed", None
     try:
         args.func(args)
+        status = "finished"
     except KeyboardInterrupt:
+        status = "interrupted"
         kept = (
             f" Files already written in {out} are complete (each is written under a temporary "
-            "name and renamed when done); `jaxtow map` keeps its finished chunks and resumes "
-            "from them when run again."
+            "name and renamed when done; the list is in its jaxtow_run.json); `jaxtow map` "
+            "keeps its finished chunks and resumes from them when run again."
             if out is not None
             else ""
         )
         print(f"\njaxtow {args.command}: interrupted.{kept}", file=sys.stderr)
         raise SystemExit(130) from None
     except (ValueError, TypeError, KeyError, OSError, RuntimeError) as e:
+        error = error_message(e)
         if os.environ.get("JAXTOW_TRACEBACK", "") not in ("", "0"):
             raise
         raise SystemExit(
-            f"jaxtow {args.command}: error: {error_message(e)}\n"
-            "(JAXTOW_TRACEBACK=1 shows where it came from)"
+            f"jaxtow {args.command}: error: {error}\n(JAXTOW_TRACEBACK=1 shows where it came from)"
         ) from None
+    except SystemExit as e:  # a command's own one-line error
+        error = str(e.code) if isinstance(e.code, str) else f"exit status {e.code}"
+        raise
     finally:
-        if lock is not None:
-            lock.close()
+        try:
+            if manifest is not None:
+                manifest.end(status, error)
+        finally:
+            if lock is not None:
+                lock.close()
     return 0
 
 

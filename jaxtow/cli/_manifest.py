@@ -1,0 +1,102 @@
+"""The run manifest: ``OUT/jaxtow_run.json``, what a command was asked, with what, and how far
+it got.
+
+Written when the run starts (status ``running``) and again when it ends (``finished``,
+``interrupted`` or ``failed`` with the one-line error), each time atomically. It holds the
+command line and every option's value, the versions of jaxtow and its numerical stack, the
+documented estimates of `jaxtow.presets.ASSUMPTIONS` (the values the thesis lacks; which of
+them a result used is in its own attributes), and the files the run wrote into the folder.
+A folder whose manifest says ``running`` with no run holding its lock was left by a killed
+process.
+"""
+
+from __future__ import annotations
+
+import json
+import platform
+import time
+from datetime import UTC, datetime
+from pathlib import Path
+
+NAME = "jaxtow_run.json"
+
+
+def _versions() -> dict:
+    from importlib.metadata import PackageNotFoundError, version
+
+    out = {"python": platform.python_version()}
+    for pkg in ("jaxtow", "jax", "jaxlib", "equinox", "diffrax", "optimistix", "numpy", "xarray"):
+        try:
+            out[pkg] = version(pkg)
+        except PackageNotFoundError:
+            out[pkg] = None
+    return out
+
+
+def _plain(v):
+    if isinstance(v, (str, int, float, bool)) or v is None:
+        return v
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    return str(v)
+
+
+class Manifest:
+    """The manifest of one run into ``out``: `start` writes it, `end` completes it."""
+
+    def __init__(self, out, args, argv):
+        self.path = Path(out) / NAME
+        self.t0 = time.time()
+        options = {k: _plain(v) for k, v in vars(args).items() if k not in ("func",)}
+        from ..presets import ASSUMPTIONS
+
+        self.record = {
+            "command": args.command,
+            "argv": ["jaxtow", *argv],
+            "options": options,
+            "versions": _versions(),
+            "estimates": {k: dict(v) for k, v in ASSUMPTIONS.items()},
+            "started": _now(),
+            "finished": None,
+            "status": "running",
+            "outputs": [],
+        }
+
+    def start(self) -> None:
+        self._write()
+
+    def end(self, status: str, error: str | None = None) -> None:
+        self.record.update(
+            status=status,
+            finished=_now(),
+            seconds=round(time.time() - self.t0, 3),
+            outputs=self._outputs(),
+        )
+        if error is not None:
+            self.record["error"] = error
+        self._write()
+
+    def _outputs(self) -> list:
+        """The files (not hidden, not the manifest) written into the folder during the run."""
+        folder = self.path.parent
+        found = []
+        for p in sorted(folder.rglob("*")):
+            rel = p.relative_to(folder)
+            if (
+                p.is_file()
+                and p.name != NAME
+                and not any(part.startswith(".") for part in rel.parts)
+                and p.stat().st_mtime >= self.t0 - 1.0
+            ):
+                found.append(str(rel))
+        return found
+
+    def _write(self) -> None:
+        from ..io._atomic import atomic_path
+
+        with atomic_path(self.path) as tmp:
+            tmp.write_text(json.dumps(self.record, indent=2, default=str) + "\n")
+
+
+def _now() -> str:
+    return datetime.now(UTC).isoformat(timespec="seconds")
