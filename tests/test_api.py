@@ -18,6 +18,7 @@ PUBLIC = [
     "jaxtow.resistance",
     "jaxtow.continuation",
     "jaxtow.design",
+    "jaxtow.distributed",
     "jaxtow.lines",
     "jaxtow.presets",
     "jaxtow.study",
