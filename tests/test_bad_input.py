@@ -491,3 +491,14 @@ def test_a_run_writes_its_manifest(tmp_path, monkeypatch):
     assert e.value.code == 130
     run = json.loads((tmp_path / "int" / "jaxtow_run.json").read_text())
     assert run["status"] == "interrupted" and run["outputs"] == []
+
+
+def test_damping_outside_a_partial_table_is_refused():
+    """A table over 0-90 deg only: damping at 120 deg was an extrapolation without a flag."""
+    w, b = np.linspace(0.2, 2.0, 10), np.radians([0.0, 30.0, 60.0, 90.0])
+    q = jt.drift.QTF(
+        omega=w, beta=b, fx=np.ones((10, 4)), fy=np.zeros((10, 4)), nz=np.zeros((10, 4))
+    )
+    assert jt.drift.wave_drift_damping(q, 1.0, np.radians(45.0)).shape == (3, 3)
+    with pytest.raises(ValueError, match=r"'beta' must lie inside the table's headings \[0, 90\]"):
+        jt.drift.wave_drift_damping(q, 1.0, np.radians(120.0))

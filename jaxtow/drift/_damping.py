@@ -32,8 +32,10 @@ from __future__ import annotations
 
 import jax
 import jax.numpy as jnp
+import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
+from .._rules import is_concrete
 from .._units import G
 from ._qtf import QTF
 
@@ -92,6 +94,22 @@ def yaw_rate_damping(q: QTF, omega: ArrayLike, beta: ArrayLike, *, g: float = G)
     return _velocity_columns(q.moments, omega, beta, g)[1]
 
 
+def _check_heading(q, beta) -> None:
+    """Eager: a concrete β outside a partial table's headings is an error naming it (the
+    interpolant would extrapolate silently; under jit the tow model's ``heading_in_table``
+    flag reports it instead)."""
+    if not isinstance(q, QTF) or not is_concrete(beta):
+        return
+    inside = np.asarray(q.in_table(beta))
+    if not inside.all():
+        lo, hi = (float(np.degrees(b)) for b in (q.beta[0], q.beta[-1]))
+        raise ValueError(
+            f"parameter 'beta' must lie inside the table's headings [{lo:g}, {hi:g}] deg, got "
+            f"{np.degrees(np.asarray(beta))} deg (complete the table by symmetry: "
+            "QTF.symmetric, or give every heading)"
+        )
+
+
 def wave_drift_damping(
     q: QTF, omega: ArrayLike, beta: ArrayLike, *, g: float = G
 ) -> Float[Array, "3 3"]:
@@ -102,6 +120,13 @@ def wave_drift_damping(
     The surge and sway columns are the derivative of Aranha's finite form at U = 0 by
     forward-mode autodiff (equal to the printed eqs 2.40-2.41); the yaw-rate column is
     `yaw_rate_damping` (zero without sectional moments)."""
+    _check_heading(q, beta)
+    return damping_matrix(q, omega, beta, g=g)
+
+
+def damping_matrix(q, omega, beta, *, g: float = G):
+    """`wave_drift_damping` without the eager heading check: for the tow model's forces,
+    which flag a heading outside the table (``heading_in_table``) instead of refusing it."""
     col_u, col_v = _velocity_columns(q, omega, beta, g)
     col_r = yaw_rate_damping(q, omega, beta, g=g).astype(col_u.dtype)
     return jnp.stack([col_u, col_v, col_r], axis=-1)

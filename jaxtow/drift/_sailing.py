@@ -10,7 +10,7 @@ from jaxtyping import Array, ArrayLike, Float
 
 from .._units import G
 from ..waves._irregular import mean_drift
-from ._damping import aranha, encounter_frequency, wave_drift_damping, yaw_rate_damping
+from ._damping import aranha, damping_matrix, encounter_frequency, yaw_rate_damping
 from ._qtf import QTF
 
 #: The forward-speed forms of `sailing_drift`.
@@ -58,13 +58,13 @@ def sailing_drift(
     omega0 = jnp.asarray(omega0, float)
     if form == "thesis":
         we = encounter_frequency(omega0, beta, u, v, g=g)
-        B = wave_drift_damping(q, we, beta, g=g)
+        B = damping_matrix(q, we, beta, g=g)
         if not yaw_rate:
             B = B.at[:, 2].set(0.0)
         return q(we, beta) + B @ jnp.stack([u, v, r])
     col_r = yaw_rate_damping(q, omega0, beta, g=g) if yaw_rate else jnp.zeros(3)
     if form == "linear":
-        B = wave_drift_damping(q, omega0, beta, g=g)
+        B = damping_matrix(q, omega0, beta, g=g)
         return q(omega0, beta) + B[:, :2] @ jnp.stack([u, v]) + col_r * r
     return aranha(q, omega0, beta, u, v, g=g) + col_r * r
 
