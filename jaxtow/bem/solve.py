@@ -35,6 +35,7 @@ import numpy as np
 
 from .. import presets
 from .._units import RHO_SEA, G
+from ..io._atomic import save_netcdf
 from .meshes import HullMesh
 from .nearfield import apply_gradient, near_field_drift, surface_gradient_operator
 
@@ -664,7 +665,7 @@ def bem_drift(
             )
             ds = _frequency_dataset(r)
             if path is not None:
-                ds.to_netcdf(path)
+                save_netcdf(ds, path)  # atomic: a killed solve leaves no partial cache file
         parts.append(ds)
         bar.update()
     out = xr.concat(

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from .._units import RHO_SEA, G
+from ..io._atomic import save_figure, save_netcdf, write_file
 from ._common import positive_float, positive_int
 from ._config import config_dispatch, read_config as _read_config
 
@@ -117,8 +118,8 @@ def cmd_bem(args):
         runs, summary = bem.mesh_convergence(
             builder, sizes, omega, beta, cache_dir=cache, progress=not args.quiet, **kw
         )
-        summary.to_netcdf(out / "convergence.nc")
-        plot_mesh_convergence(summary, runs).savefig(out / "fig_B1_convergence.png", dpi=120)
+        save_netcdf(summary, out / "convergence.nc")
+        save_figure(plot_mesh_convergence(summary, runs), out / "fig_B1_convergence.png", dpi=120)
         print(
             summary.near_vs_far.to_dataframe().unstack("zone").to_string()
             if hasattr(summary, "to_dataframe")
@@ -132,7 +133,7 @@ def cmd_bem(args):
         f"x {beta.size} headings"
     )
     ds = bem.bem_drift(mesh, omega, beta, cache_dir=cache, progress=not args.quiet, **kw)
-    ds.to_netcdf(out / "bem.nc")
+    save_netcdf(ds, out / "bem.nc")
     bad = ds.omega.values[~ds.resolved.values]
     if bad.size:
         print(
@@ -169,13 +170,15 @@ def cmd_bem(args):
             np.repeat(ds.omega.values[:, None], beta.size, 1),
             L,
         )
-    (out / "summary.json").write_text(json.dumps(summary, indent=2))
+    write_file(out / "summary.json", json.dumps(summary, indent=2))
     bds = [float(np.degrees(b)) for b in beta[:: max(1, beta.size // 3)]][:3]
     for bd in sorted(set([bds[0], 15.0 if np.any(np.isclose(np.degrees(beta), 15)) else bds[-1]])):
-        plot_rao(ds, bd).savefig(out / f"fig_rao_beta{bd:g}.png", dpi=110)
-    plot_bem_qtf(ds, bds).savefig(out / "fig_qtf.png", dpi=110)
-    plot_nearfield_parts(ds, bds[min(1, len(bds) - 1)]).savefig(
-        out / "fig_nearfield_parts.png", dpi=110
+        save_figure(plot_rao(ds, bd), out / f"fig_rao_beta{bd:g}.png", dpi=110)
+    save_figure(plot_bem_qtf(ds, bds), out / "fig_qtf.png", dpi=110)
+    save_figure(
+        plot_nearfield_parts(ds, bds[min(1, len(bds) - 1)]),
+        out / "fig_nearfield_parts.png",
+        dpi=110,
     )
     print(
         json.dumps(

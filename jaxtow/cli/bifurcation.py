@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..io._atomic import write_file
 from ._common import _model, _tow_option, positive_float
 
 
@@ -87,7 +88,8 @@ def cmd_bifurcation(args):
         )
         for o in orbits
     ]
-    (out / f"bifurcation_{tow_name}_{args.param}.json").write_text(
+    write_file(
+        out / f"bifurcation_{tow_name}_{args.param}.json",
         json.dumps(
             dict(
                 tow=tow_name,
@@ -99,7 +101,7 @@ def cmd_bifurcation(args):
             ),
             indent=2,
             default=float,
-        )
+        ),
     )
     print(f"{vessel.name}: continuation in {args.param}' over [{lo}, {hi}]")
     for s in special:

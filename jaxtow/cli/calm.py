@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..io._atomic import write_file
 from ._common import (
     _common,
     _grid,
@@ -81,7 +82,7 @@ def cmd_calm(args):
         )
         if not args.no_time_domain:
             summary[vname]["time_domain"] = _time_domain(model, vname, args, out)
-    (out / "summary.json").write_text(json.dumps(summary, indent=2, default=float))
+    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     for vname, s in summary.items():
         print(
             f"{vname}: c = {s['stability_coefficient_c']:+.4f} ({'course stable' if s['course_stable'] else 'course unstable'})"

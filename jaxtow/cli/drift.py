@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..io._atomic import write_file
 from ._common import _tow_option, positive_int
 
 SWAY_METHODS = ("faltinsen", "liu", "fujii_takahashi", "kuroda", "kashiwagi")
@@ -197,7 +198,7 @@ def cmd_drift(args):
         )
         save(axes[0, 0], out / fig)
 
-    (out / "summary.json").write_text(json.dumps(summary, indent=2, default=float))
+    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     print(
         f"{wl.name}: L = {L:g} m, B = {B:g} m, T = {float(wl.draft):g} m, C_B = {float(wl.block_coefficient):.3f}"
     )

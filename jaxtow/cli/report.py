@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import reports as W
+from ..io._atomic import write_file
 
 
 def _straight(ds, field="max_real"):
@@ -353,10 +354,11 @@ def cmd_report(args):
             out / "barge_2a_slow_drift.png",
         )
     summary["claims"] = claims
-    (out / "claims.json").write_text(json.dumps(claims, indent=2, default=float))
-    (out / "summary.json").write_text(json.dumps(summary, indent=2, default=float))
+    write_file(out / "claims.json", json.dumps(claims, indent=2, default=float))
+    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     table = claims_table(claims)
-    (out / "claims.md").write_text(
+    write_file(
+        out / "claims.md",
         "# Thesis claims by drift source and sailing-drift form\n\n"
         + table
         + "\nDrift sources:\n\n"
@@ -366,7 +368,7 @@ def cmd_report(args):
             "claims.json, key 'attribution'.\n"
             if attributions
             else ""
-        )
+        ),
     )
     print(table)
     print(f"primary drift forces: {base.source} ({args.form})")

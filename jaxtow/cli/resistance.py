@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..io._atomic import write_file
 from ..reports._resistance import eqx_tp as eqx_tp, evaluate as evaluate, resistance_table
 from ._config import config_dispatch, read_config as _read_config
 
@@ -268,7 +269,7 @@ def cmd_resistance(args):
         route_length_m=route,
         sea_states=rows,
     )
-    (out / "summary.json").write_text(json.dumps(summary, indent=2, default=float))
+    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     print(f"wrote figures, NetCDF datasets and summary.json to {out}")
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+from ..io._atomic import write_file
 from ._common import (
     _common,
     _model,
@@ -25,7 +26,7 @@ def cmd_simulate(args):
         summary[vname] = _time_domain(model, vname, args, out) | dict(
             assumed_values=dict(model.assumed)
         )
-    (out / "simulate_summary.json").write_text(json.dumps(summary, indent=2, default=float))
+    write_file(out / "simulate_summary.json", json.dumps(summary, indent=2, default=float))
     print(f"wrote figures, runs and simulate_summary.json to {out}")
 
 

@@ -4,17 +4,11 @@ self-contained HTML report."""
 from __future__ import annotations
 
 import json
-import os
 import sys
 from pathlib import Path
 
+from ..io._atomic import write_file
 from .tow import load_tow
-
-
-def _write_atomic(path: Path, data: bytes | str):
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    tmp.write_bytes(data.encode() if isinstance(data, str) else data)
-    os.replace(tmp, path)
 
 
 def cmd_study(args):
@@ -47,12 +41,10 @@ def cmd_study(args):
         save_dataset(ds, out / f"{tow.name}_{name}.nc")
     figs = {k: png_bytes(f) for k, f in study_figures(study).items()}
     for k, b in figs.items():
-        _write_atomic(out / f"{tow.name}_{k}.png", b)
-    _write_atomic(
-        out / f"{tow.name}_summary.json", json.dumps(study.summary, indent=2, default=float)
-    )
+        write_file(out / f"{tow.name}_{k}.png", b)
+    write_file(out / f"{tow.name}_summary.json", json.dumps(study.summary, indent=2, default=float))
     report = out / f"{tow.name}_report.html"
-    _write_atomic(report, tow_report_html(study.summary, figs, version=jt.__version__))
+    write_file(report, tow_report_html(study.summary, figs, version=jt.__version__))
     s = study.summary
     print(f"{tow.name}: {s.get('description', '')}")
     if "calm" in s:

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from ..io._atomic import write_file
+
 
 def load_tow(spec, command: str):
     """The `jaxtow.tow.Tow` of a built-in name or a file, with a one-line error (and the
@@ -38,7 +40,7 @@ def cmd_new(args):
     out = Path(args.file)
     if out.exists() and not args.force:
         raise SystemExit(f"jaxtow tow new: error: {out} exists (use --force to overwrite)")
-    out.write_text(template())
+    write_file(out, template())
     print(f"wrote a commented tow-file template to {out}; check it with: jaxtow tow show {out}")
 
 

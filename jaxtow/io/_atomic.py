@@ -55,3 +55,26 @@ def atomic_path(path):
     finally:
         if tmp.exists():
             tmp.unlink()
+
+
+def write_file(path, data: str | bytes) -> None:
+    """Write ``data`` (text or bytes) to ``path`` atomically (`atomic_path`)."""
+    with atomic_path(path) as tmp:
+        if isinstance(data, str):
+            tmp.write_text(data)
+        else:
+            tmp.write_bytes(data)
+
+
+def save_figure(fig, path, **kwargs) -> None:
+    """``fig.savefig(path, **kwargs)`` atomically (`atomic_path`); the format comes from
+    ``path``'s extension, not the temporary name's."""
+    kwargs.setdefault("format", Path(path).suffix.lstrip(".") or None)
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, **kwargs)
+
+
+def save_netcdf(ds, path) -> None:
+    """``ds.to_netcdf(path)`` atomically (`atomic_path`)."""
+    with atomic_path(path) as tmp:
+        ds.to_netcdf(tmp)

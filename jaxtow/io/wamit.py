@@ -49,6 +49,7 @@ import numpy as np
 
 from .._units import RHO_SEA, G
 from ..drift._qtf import QTF, SYMMETRY_TOL, FullQTF, symmetry_residual
+from ._atomic import save_netcdf, write_file
 
 _MODES = {1: 0, 2: 1, 6: 2}
 _MEAN_COLUMNS = 8
@@ -389,7 +390,7 @@ def write_wamit_drift(
                     f"{per:.17e} {b:.17e} {b:.17e} {mode:d} {abs(re_):.17e} "
                     f"{0.0 if re_ >= 0 else 180.0:.1f} {re_:.17e} {0.0:.17e}"
                 )
-    Path(path).write_text("\n".join(lines) + "\n")
+    write_file(path, "\n".join(lines) + "\n")
 
 
 # --------------------------------------------------------------------------- full QTF
@@ -476,7 +477,7 @@ def write_wamit_qtf(
                         f"{mode:d} {abs(z):.17e} {math.degrees(np.angle(z)):.17e} "
                         f"{z.real:.17e} {z.imag:.17e}"
                     )
-    Path(path).write_text("\n".join(lines) + "\n")
+    write_file(path, "\n".join(lines) + "\n")
 
 
 # --------------------------------------------------------------------------- jaxtow formats
@@ -543,7 +544,7 @@ def save_qtf(q: QTF, path, attrs: dict | None = None) -> None:
             header="\n".join(head + ["omega [rad/s],beta [rad],fx [N/m2],fy [N/m2],nz [N m/m2]"]),
         )
     else:
-        qtf_to_dataset(q, attrs).to_netcdf(path)
+        save_netcdf(qtf_to_dataset(q, attrs), path)
 
 
 def load_qtf(path) -> QTF:

@@ -5,6 +5,8 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
+from ..io._atomic import save_figure
+
 BRANCH_STYLE = {
     -1: ("psi < 0 side", "tab:orange"),
     0: ("straight behind", "tab:blue"),
@@ -90,5 +92,5 @@ def plot_stability_map(ds, x: str, y: str, branch: int = 0, ax=None, title: str 
 def save(fig_or_ax, path):
     fig = fig_or_ax.figure if hasattr(fig_or_ax, "figure") else fig_or_ax
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    save_figure(fig, path, dpi=120)
     plt.close(fig)
