@@ -502,3 +502,14 @@ def test_damping_outside_a_partial_table_is_refused():
     assert jt.drift.wave_drift_damping(q, 1.0, np.radians(45.0)).shape == (3, 3)
     with pytest.raises(ValueError, match=r"'beta' must lie inside the table's headings \[0, 90\]"):
         jt.drift.wave_drift_damping(q, 1.0, np.radians(120.0))
+
+
+def test_wave_synthesis_on_a_descending_grid_is_refused():
+    """Δω < 0 gave NaN amplitudes: the elevation record was all NaN."""
+    w = np.linspace(0.3, 1.5, 20)
+    S = jt.waves.jonswap(w, hs=2.0, tp=8.0)
+    t = np.linspace(0.0, 100.0, 11)
+    key = jax.random.PRNGKey(0)
+    assert np.all(np.isfinite(jt.waves.synthesise_elevation(key, w, S, t)))
+    with pytest.raises(ValueError, match="'omega' must be strictly ascending"):
+        jt.waves.synthesise_elevation(key, w[::-1], S[::-1], t)

@@ -13,7 +13,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
-from ._spectra import _integrate
+from ._spectra import _integrate, check_ascending
 
 #: The default wave-frequency grid of every irregular-sea integral in jaxtow [rad/s]: 0.05-4
 #: rad/s in 800 points (Δω ≈ 0.005 rad/s). It covers JONSWAP spectra with Tp from about 4 s
@@ -77,6 +77,7 @@ def slow_drift_force_spectrum(
 def _components(key, omega, S, random_amplitudes: bool):
     """Amplitudes a_i = √(2 S_i Δω_i) and uniform phases; with ``random_amplitudes`` the
     amplitudes are Rayleigh distributed with the same mean square (a Gaussian sea)."""
+    check_ascending(omega)  # a descending grid gave negative Δω and NaN amplitudes
     omega = jnp.asarray(omega)
     dw = jnp.gradient(omega)
     a = jnp.sqrt(2.0 * jnp.asarray(S) * dw)
