@@ -67,3 +67,16 @@ def test_inputs_checked_before_any_task(model):
         jt.distributed.sweep(model, {"l0": [2.0]}, checkpoint="x")
     with pytest.raises(ValueError, match="runs_per_task"):
         jt.distributed.simulate_batch(model, np.zeros((1, 6)), client=None, runs_per_task=0)
+
+
+@pytest.mark.slow
+def test_lazy_sweep_without_a_cluster_equals_one_process(model):
+    """Without a client the Dataset stays lazy (shapes from tracing, nothing computed) and
+    is computed by whichever scheduler is active: here Dask's synchronous one."""
+    grid = {"l0": np.linspace(1.0, 4.0, 10)}
+    ref = jt.sweep(model, grid, chunk_size=4)
+    lazy = jt.distributed.sweep(model, grid, chunk_size=4)
+    assert lazy["max_real"].chunks is not None
+    ds = lazy.compute(scheduler="synchronous")
+    for k in ref.data_vars:
+        np.testing.assert_array_equal(ds[k].values, ref[k].values, err_msg=k)
