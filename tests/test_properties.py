@@ -17,7 +17,7 @@ hypothesis = pytest.importorskip("hypothesis", reason="the test extra's hypothes
 from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
 
 SETTINGS = settings(
-    max_examples=12,
+    max_examples=8,
     deadline=None,
     derandomize=True,  # the same examples on every run: a CI failure reproduces locally
     suppress_health_check=[HealthCheck.too_slow],
