@@ -96,7 +96,8 @@ def sweep(
     method = options.get("method", "numerical")
     plan = plan_sweep(model, grid, chunk_size=chunk_size, **options)
     # the model and the plan (its axes, not its points) enter the graph once, as bytes: given
-    # as objects, Dask would take the dataclasses apart and rebuild them in every task
+    # as objects, Dask takes dataclasses apart into the graph and rebuilds them by calling
+    # their constructors on the worker
     model_node = dask.delayed(pickle.loads, pure=True)(pickle.dumps(model))
     plan_node = dask.delayed(pickle.loads, pure=True)(pickle.dumps(plan))
     results = [
