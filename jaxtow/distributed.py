@@ -46,9 +46,9 @@ def _dask():
 
 
 def _canonical(model):
-    """The model with NumPy leaves, however it reached this process: a model is serialised
-    differently as a task's argument and through ``client.run``, and the array types (JAX or
-    NumPy, weak or strong) are part of the compiled kernel's cache key."""
+    """The model with NumPy leaves, whichever way it reached this process (a task's
+    argument, ``client.run``): the array types (JAX or NumPy, weak or strong) are part of
+    the compiled kernel's cache key, so every path then finds the same compiled kernel."""
     return jax.tree.map(
         lambda x: np.asarray(x) if isinstance(x, (jax.Array, np.ndarray)) else x, model
     )
