@@ -109,10 +109,10 @@ def at_tug_speed(model: TowModel, u_tug) -> TowModel:
             "parameter 'u_tug': the model has no reference scales to change the tug speed of; "
             "build it with TowModel(..., scales=jaxtow.Scales(length=..., draft=..., u_tug=...))"
         )
-    V.POSITIVE.check("u_tug", u_tug)  # eager; traced below (a zero speed made EA' infinite)
+    # eager (a zero speed made EA' infinite and the error named EA); a traced speed is checked
+    # where the model is used, by the rule on `Scales.u_tug` (no host callback in the sweeps)
+    V.POSITIVE.check("u_tug", u_tug)
     u_tug = jnp.asarray(u_tug, dtype=float)
-    bad, message = V.POSITIVE.traced("u_tug", u_tug)
-    u_tug = eqx.error_if(u_tug, bad, message)
     model = eqx.tree_at(
         lambda m: m.towline, model, model.towline.rescaled((ref.u_tug / u_tug) ** 2)
     )
