@@ -33,7 +33,7 @@ from jaxtyping import Array, Bool, Float, Int
 
 from . import _rules as V
 from ._dynamics import TowModel, force_breakdown, vector_field
-from ._roots import bisect, brackets, newton
+from ._roots import bisect, brackets, polish
 from ._rules import check_now, guard
 from ._towline import Towline
 from .forces._base import NoExternalForce
@@ -158,23 +158,34 @@ def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
     )
 
 
-def _refine(lo, hi, exact, model: TowModel, max_steps: int):
-    """Root of F on [lo, hi] to machine precision: bisection, then a two-step Newton polish
-    (`jaxtow._roots`)."""
+def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, max_steps: int):
+    """Root of F on [lo, hi] (where F takes the values ``f_lo``, ``f_hi``) to machine
+    precision: bisection, then a two-step Newton polish (`jaxtow._roots`)."""
     psi, ok = bisect(
-        lambda p, m: heading_residual(p, m), lo, hi, model, atol=1e-13, max_steps=max_steps
-    )
-    psi, _ = newton(
         lambda p, m: heading_residual(p, m),
-        psi,
+        lo,
+        hi,
         model,
-        rtol=0.0,
-        atol=0.0,
-        max_steps=2,
-        lower=lo,
-        upper=hi,
+        atol=1e-13,
+        max_steps=max_steps,
+        f_lo=f_lo,
+        f_hi=f_hi,
     )
+    psi = polish(lambda p, m: heading_residual(p, m), psi, model, steps=2, lower=lo, upper=hi)
     return jnp.where(exact, lo, psi), ok | exact
+
+
+def _scan_residual(grid, model: TowModel):
+    """The heading residual on ``grid``, in batches of `SCAN_BATCH` headings. The grid is
+    padded with its last heading to whole batches: a remainder batch would trace (and
+    compile) the force model a second time."""
+    n = grid.shape[0]
+    if n <= SCAN_BATCH:
+        return jax.vmap(lambda p: heading_residual(p, model))(grid)
+    pad = -n % SCAN_BATCH
+    padded = jnp.concatenate([grid, jnp.full((pad,), grid[-1], grid.dtype)])
+    F = jax.lax.map(lambda p: heading_residual(p, model), padded, batch_size=SCAN_BATCH)
+    return F[:n]
 
 
 def equilibria_fixed(
@@ -205,10 +216,10 @@ def equilibria_fixed(
     grid = jnp.linspace(-psi_range, psi_range, n_grid)
     # batches of headings (not one vmap over all): an expensive force model (an irregular-sea
     # drift integral, say) would otherwise materialise n_grid copies of its intermediates
-    F = jax.lax.map(lambda p: heading_residual(p, model), grid, batch_size=SCAN_BATCH)
+    F = _scan_residual(grid, model)
     idx, found, exact, count = brackets(F, max_roots)
-    psi, ok = jax.vmap(_refine, in_axes=(0, 0, 0, None, None))(
-        grid[idx], grid[idx + 1], exact, model, max_steps
+    psi, ok = jax.vmap(_refine, in_axes=(0, 0, 0, 0, 0, None, None))(
+        grid[idx], grid[idx + 1], F[idx], F[idx + 1], exact, model, max_steps
     )
     eqs = _finish(psi, found, ok & (count > 0), model, count)
     return guard(eqs, model.checks()) if check else eqs

@@ -55,9 +55,18 @@ def three_point_slopes(x: Float[Array, " n"], y: Float[Array, "... n"], *, perio
     return jnp.concatenate([first[..., None], mid, last[..., None]], axis=-1)
 
 
+def cell_index(x: Float[Array, " n"], xq):
+    """The interval ``i`` (0 … n − 2) with ``x[i] <= xq < x[i + 1]`` (clamped at both ends)
+    of an ascending grid. By comparison with every node: for the short grids of jaxtow's
+    tables this costs a few vector operations, where `jax.numpy.searchsorted`'s default
+    traces a loop that dominated the tracing time of the sweep kernels."""
+    i = jnp.searchsorted(x, xq, side="right", method="compare_all") - 1
+    return jnp.clip(i, 0, x.shape[0] - 2)
+
+
 def _interval(x, xq):
     xq = jnp.clip(xq, x[0], x[-1])
-    i = jnp.clip(jnp.searchsorted(x, xq, side="right") - 1, 0, x.shape[0] - 2)
+    i = cell_index(x, xq)
     h = x[i + 1] - x[i]
     return xq, i, h, (xq - x[i]) / h
 

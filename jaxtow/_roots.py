@@ -20,6 +20,7 @@ steps as the slowest.
 
 from __future__ import annotations
 
+import jax
 import jax.numpy as jnp
 import lineax as lx
 import optimistix as optx
@@ -43,7 +44,18 @@ def brackets(
     return idx, found, exact[idx], count
 
 
-def bisect(fn, lo, hi, args=None, *, atol: float = 0.0, rtol: float = 0.0, max_steps: int = 256):
+def bisect(
+    fn,
+    lo,
+    hi,
+    args=None,
+    *,
+    atol: float = 0.0,
+    rtol: float = 0.0,
+    max_steps: int = 256,
+    f_lo=None,
+    f_hi=None,
+):
     """Root of ``fn(x, args)`` in the bracket [lo, hi] (a sign change) by
     `optimistix.Bisection`; returns ``(x, successful)``. The default tolerances (0) run to
     the floating-point limit of the bracket and stop at ``max_steps`` (then ``successful``
@@ -53,8 +65,10 @@ def bisect(fn, lo, hi, args=None, *, atol: float = 0.0, rtol: float = 0.0, max_s
     The orientation of the bracket is taken from fn(lo) and fn(hi) here, not by the
     solver's ``flip="detect"``: that check is an `equinox.error_if`, a host callback, and a
     compiled program holding one is never written to JAX's persistent compilation cache
-    (`jaxtow.enable_compile_cache`)."""
-    f_lo, f_hi = fn(lo, args), fn(hi, args)
+    (`jaxtow.enable_compile_cache`). ``f_lo``, ``f_hi``: fn(lo) and fn(hi) where the
+    caller has them already (the scan of `brackets`), saving two traces of ``fn``."""
+    f_lo = fn(lo, args) if f_lo is None else f_lo
+    f_hi = fn(hi, args) if f_hi is None else f_hi
     sign = jnp.where(f_lo < 0, 1.0, -1.0)  # sign * fn rises through the bracket
     solver = optx.Bisection(rtol=rtol, atol=atol, flip=False)
     sol = optx.root_find(
@@ -93,3 +107,22 @@ def newton(
     options = {} if lower is None else dict(lower=lower, upper=upper)
     sol = optx.root_find(fn, solver, x0, args, options=options, max_steps=max_steps, throw=False)
     return sol.value, sol.result == optx.RESULTS.successful
+
+
+def polish(fn, x, args=None, *, steps: int = 2, lower=None, upper=None):
+    """``steps`` Newton steps on a scalar ``fn(x, args) = 0`` from a bracketed root ``x``
+    (clipped to [``lower``, ``upper``]): the final polish after `bisect`. A fixed number of
+    steps needs no termination test, linear solver or adjoint, so the residual is traced
+    once (`newton` traces it several times: the cost that dominated the tracing of the sweep
+    kernels). Derivatives pass through the steps; at a root the derivative of a Newton step
+    with respect to the parameters is the implicit one, −∂_θ fn / ∂_x fn."""
+
+    def step(_, x):
+        f, df = jax.jvp(lambda z: fn(z, args), (x,), (jnp.ones_like(x),))
+        x_new = x - f / jnp.where(df == 0, 1.0, df)
+        x_new = jnp.where(df == 0, x, x_new)
+        if lower is not None:
+            x_new = jnp.clip(x_new, lower, upper)
+        return x_new
+
+    return jax.lax.fori_loop(0, steps, step, x)

@@ -20,6 +20,7 @@ import math
 import os
 from collections.abc import Callable, Mapping
 
+import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -115,6 +116,17 @@ def _mesh(devices):
     return Mesh(np.array(devices), ("points",)), len(devices)
 
 
+def without_metadata(model: TowModel) -> TowModel:
+    """The model with the vessel's static metadata (``name``, ``assumed``) set to their
+    defaults. They do not enter the numbers, but as static fields they are part of the
+    model's structure: without this, Barge 2a and 2b (which differ only in them) would each
+    trace and compile the same sweep kernel."""
+    v = model.vessel
+    if v.name == "vessel" and v.assumed == ():
+        return model
+    return eqx.tree_at(lambda m: m.vessel, model, dataclasses.replace(v, name="vessel", assumed=()))
+
+
 @functools.lru_cache(maxsize=32)
 def _cached_kernel(options: tuple):
     kernel_options = dict(options)
@@ -122,7 +134,13 @@ def _cached_kernel(options: tuple):
     def batched(model, flat_params):
         return jax.vmap(lambda p: point_kernel(model, p, **kernel_options))(flat_params)
 
-    return jax.jit(batched)
+    jitted = jax.jit(batched)
+
+    def kernel(model, flat_params):
+        return jitted(without_metadata(model), flat_params)
+
+    kernel.jitted = jitted  # type: ignore[attr-defined]  (for .lower/.trace in benchmarks)
+    return kernel
 
 
 def make_batched_kernel(**kernel_options):

@@ -184,9 +184,11 @@ PLAUSIBLE_RANGES = {
     ),
     "cog_z": dict(
         low=8.0,
-        high=13.8,
+        high=13.1,
         units="m",
-        note="above the keel: a light deck cargo (8 m) to the CoG the thesis's chapter 7 quotes (13.8 m)",
+        note="above the keel: a light deck cargo (8 m) to the highest CoG the IMO 2008 IS Code "
+        "allows at the 5 m draft (GM_T >= 0.15 m; KM = 13.26 m). The 13.8 m the thesis's "
+        "chapter 7 quotes gives GM_T = -0.54 m here: it capsizes",
     ),
     "radii_of_gyration": dict(
         low=(0.30, 0.22, 0.22),

@@ -76,12 +76,15 @@ def aranha(table, omega: ArrayLike, beta: ArrayLike, u: ArrayLike, v: ArrayLike,
     return (1.0 + 4.0 * omega / g * along) * table(we, be)
 
 
-def _velocity_columns(table, omega, beta, g):
-    """d/d(u, v) of Aranha's finite form at U = 0: two (3,) columns."""
+def _velocity_column(table, omega, beta, g, which: str):
+    """d/du (``which="u"``) or d/dv (``"v"``) of Aranha's finite form at U = 0: a (3,)
+    column."""
     zero = jnp.zeros((), dtype=float)
-    col_u = jax.jvp(lambda x: aranha(table, omega, beta, x, zero, g=g), (zero,), (1.0 + zero,))[1]
-    col_v = jax.jvp(lambda x: aranha(table, omega, beta, zero, x, g=g), (zero,), (1.0 + zero,))[1]
-    return col_u, col_v
+    if which == "u":
+        f = lambda x: aranha(table, omega, beta, x, zero, g=g)  # noqa: E731
+    else:
+        f = lambda x: aranha(table, omega, beta, zero, x, g=g)  # noqa: E731
+    return jax.jvp(f, (zero,), (1.0 + zero,))[1]
 
 
 def yaw_rate_damping(q: QTF, omega: ArrayLike, beta: ArrayLike, *, g: float = G):
@@ -91,7 +94,7 @@ def yaw_rate_damping(q: QTF, omega: ArrayLike, beta: ArrayLike, *, g: float = G)
     moments (`QTF.has_sectional`)."""
     if not getattr(q, "has_sectional", False):
         return jnp.zeros(3, dtype=float)
-    return _velocity_columns(q.moments, omega, beta, g)[1]
+    return _velocity_column(q.moments, omega, beta, g, "v")
 
 
 def _check_heading(q, beta) -> None:
@@ -127,7 +130,8 @@ def wave_drift_damping(
 def damping_matrix(q, omega, beta, *, g: float = G):
     """`wave_drift_damping` without the eager heading check: for the tow model's forces,
     which flag a heading outside the table (``heading_in_table``) instead of refusing it."""
-    col_u, col_v = _velocity_columns(q, omega, beta, g)
+    col_u = _velocity_column(q, omega, beta, g, "u")
+    col_v = _velocity_column(q, omega, beta, g, "v")
     col_r = yaw_rate_damping(q, omega, beta, g=g).astype(col_u.dtype)
     return jnp.stack([col_u, col_v, col_r], axis=-1)
 

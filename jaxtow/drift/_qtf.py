@@ -28,7 +28,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
-from .._interp import hermite_cell, hermite_local, node_slope
+from .._interp import cell_index, hermite_cell, hermite_local, node_slope
 
 _COMPONENTS = ("fx", "fy", "nz")
 
@@ -247,7 +247,7 @@ class QTF(eqx.Module):
         if self.periodic:
             beta = jnp.mod(beta + jnp.pi, 2 * jnp.pi) - jnp.pi
         beta = jnp.clip(beta, b[0], b[-1])
-        j = jnp.clip(jnp.searchsorted(b, beta, side="right") - 1, 0, n - 2)
+        j = cell_index(b, beta)
 
         def neighbours(k):
             if self.periodic:  # the end nodes (−π and π) are one point

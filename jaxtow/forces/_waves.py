@@ -7,6 +7,7 @@ import jax.numpy as jnp
 from jaxtyping import Array, Float
 
 from .. import _rules as V
+from .._interp import cell_index
 from .._units import G, Scales
 from ..drift._damping import encounter_frequency, sailing_validity
 from ..drift._methods import FROUDE_MAX
@@ -279,7 +280,7 @@ class SlowDriftForce(AbstractExternalForce):
         full = (jnp.abs(b[0] + jnp.pi) < 1e-9) & (jnp.abs(b[-1] - jnp.pi) < 1e-9)
         beta = jnp.where(full, jnp.mod(beta + jnp.pi, 2 * jnp.pi) - jnp.pi, beta)
         beta = jnp.clip(beta, b[0], b[-1])
-        k = jnp.clip(jnp.searchsorted(b, beta, side="right") - 1, 0, b.shape[0] - 2)
+        k = cell_index(b, beta)
         f = (beta - b[k]) / (b[k + 1] - b[k])
         return D[k] * (1 - f) + D[k + 1] * f
 
