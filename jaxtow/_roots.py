@@ -1,8 +1,8 @@
 """Root finding: the one implementation behind every root jaxtow solves.
 
-Every root problem of jaxtow goes through these helpers, and they go through optimistix
-(`optimistix.root_find`, whose implicit adjoint gives exact derivatives of a root with
-respect to the parameters):
+Every root problem of jaxtow goes through these helpers; the iterations that stop on a
+tolerance go through optimistix (`optimistix.root_find`, whose implicit adjoint gives exact
+derivatives of a root with respect to the parameters):
 
 * `brackets`: scan-then-refine, step one — the sign changes of a sampled function (the
   equilibrium headings of the heading residual, the operating speed of the pull balance);
@@ -12,7 +12,10 @@ respect to the parameters):
   the residual checked by the caller (optimistix terminates on the change of the iterate):
   the polish of a bracketed root, the continuation corrector, the straight-behind
   equilibrium of the design module and the shooting of periodic orbits (least squares when
-  the Jacobian is singular, ``well_posed=False``).
+  the Jacobian is singular, ``well_posed=False``);
+* `polish`: a fixed number of scalar Newton steps after `bisect` (no termination test, so
+  no solver is needed, and the residual is traced once: inside the sweep kernels this is
+  what keeps their tracing and compilation short).
 
 All three are pure and jittable; under `jax.vmap` every member of a batch takes as many
 steps as the slowest.

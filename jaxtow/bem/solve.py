@@ -327,6 +327,89 @@ def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
     return h.hexdigest()[:20]
 
 
+@dataclasses.dataclass(frozen=True)
+class _Prepared:
+    """What every frequency of one hull and body shares: the Capytaine body, the panels in
+    its order, and the frequency-independent geometry of the far and near field."""
+
+    cbody: object
+    mesh: HullMesh  # panels in Capytaine's order
+    hull_mask: np.ndarray  # the hull panels among hull and lid
+    all_centres: np.ndarray  # hull and lid panels (the sources' order)
+    all_areas: np.ndarray
+    full: object  # Capytaine mesh of hull and lid, plain (sources' order)
+    centres: np.ndarray  # hull panels
+    normals: np.ndarray
+    areas: np.ndarray
+    wl_points: np.ndarray
+    wl_normals: np.ndarray
+    wl_lengths: np.ndarray
+    gradient: tuple  # (index, weights) of `surface_gradient_operator`
+
+
+def _prepare(mesh: HullMesh, body: RigidBody, symmetry: bool = True) -> _Prepared:
+    """Build the Capytaine body and the geometry once for all frequencies (building the
+    symmetric meshes, their panel properties and the gradient operator cost as much as a
+    coarse solve when redone per frequency)."""
+    cpt = require_capytaine()
+    if symmetry:
+        hull, lid, mesh = symmetric_capytaine_mesh(mesh)  # mesh: panels in Capytaine's order
+    else:
+        hull, lid = to_capytaine_mesh(mesh)
+    mass_kw = dict(center_of_mass=body.cog, mass=body.mass) if body.mass > 0 else {}
+    cbody = cpt.FloatingBody(
+        mesh=hull,
+        lid_mesh=lid,
+        dofs=cpt.rigid_body_dofs(rotation_center=body.cog),
+        name=mesh.name,
+        **mass_kw,
+    )
+    hull_mesh = cbody.mesh
+    full = cbody.mesh_including_lid  # the sources are in its panel order
+    full = full.merged() if hasattr(full, "merged") else full
+    centres = np.asarray(hull_mesh.faces_centers)
+    all_centres = np.asarray(full.faces_centers)
+    hull_mask = np.asarray(cbody.hull_mask, bool)
+    if not (
+        np.allclose(centres, mesh.centres, atol=1e-6)
+        and np.allclose(all_centres[hull_mask], centres, atol=1e-6)
+    ):
+        raise RuntimeError("the hull panels are not in Capytaine's order")
+    nrm = np.asarray(hull_mesh.faces_normals)
+    p0, p1, owner = mesh.waterline()
+    wpts = 0.5 * (p0 + p1)
+    return _Prepared(
+        cbody=cbody,
+        mesh=mesh,
+        hull_mask=hull_mask,
+        all_centres=all_centres,
+        all_areas=np.asarray(full.faces_areas),
+        full=full,
+        centres=centres,
+        normals=nrm,
+        areas=np.asarray(hull_mesh.faces_areas),
+        wl_points=wpts,
+        wl_normals=mesh.normals[owner],
+        wl_lengths=np.linalg.norm(p1 - p0, axis=1),
+        gradient=surface_gradient_operator(mesh.vertices, mesh.faces, centres, nrm, wpts, owner),
+    )
+
+
+def kochin(centres, areas, sources, theta, wavenumber: float, water_depth: float = math.inf):
+    """Kochin functions H(θ) (n_problems, n_θ) of source distributions ``sources``
+    (n_panels, n_problems) on panels with ``centres`` and ``areas``: Capytaine's
+    `compute_kochin` (reference point at the origin) for every problem of a frequency at
+    once. The (n_θ, n_panels) kernel is the same for all of them, so it is built once."""
+    k, h = float(wavenumber), float(water_depth)
+    phase = centres[:, :2] @ np.stack([np.cos(theta), np.sin(theta)])  # (n_panels, n_θ)
+    if 0 <= k * h < 20:
+        depth = np.cosh(k * (centres[:, 2] + h)) / np.cosh(k * h)
+    else:
+        depth = np.exp(k * centres[:, 2])
+    zs = (depth * areas)[None, :] * np.exp(-1j * k * phase.T)
+    return (zs @ sources).T / (4 * np.pi)
+
+
 def solve_frequency(
     mesh: HullMesh,
     body: RigidBody | None,
@@ -340,30 +423,22 @@ def solve_frequency(
     fixed: bool = False,
     solver=None,
     symmetry: bool = True,
+    prepared: _Prepared | None = None,
 ) -> dict:
     """Everything at one frequency (see the module docstring); plain NumPy arrays.
     ``fixed=True`` holds the body still (RAOs zero: diffraction only). ``symmetry`` lets the
-    solver use the hull's reflection planes (`symmetric_capytaine_mesh`; the same results)."""
+    solver use the hull's reflection planes (`symmetric_capytaine_mesh`; the same results).
+    ``prepared``: the shared geometry from `_prepare` (`bem_drift` builds it once)."""
     cpt = require_capytaine()
-    from capytaine.bem.airy_waves import airy_waves_potential
+    from capytaine.bem.airy_waves import airy_waves_potential, froude_krylov_force
 
     beta = np.asarray(beta, float)
     if body is None:
         if not fixed:
             raise ValueError("parameter 'body' is needed unless fixed=True")
         body = _fixed_body()
-    if symmetry:
-        hull, lid, mesh = symmetric_capytaine_mesh(mesh)  # mesh: panels in Capytaine's order
-    else:
-        hull, lid = to_capytaine_mesh(mesh)
-    mass_kw = dict(center_of_mass=body.cog, mass=body.mass) if body.mass > 0 else {}
-    cbody = cpt.FloatingBody(
-        mesh=hull,
-        lid_mesh=lid,
-        dofs=cpt.rigid_body_dofs(rotation_center=body.cog),
-        name=mesh.name,
-        **mass_kw,
-    )
+    pr = prepared if prepared is not None else _prepare(mesh, body, symmetry)
+    cbody, mesh = pr.cbody, pr.mesh
     solver = solver or cpt.BEMSolver(method="indirect")
     env = dict(omega=float(omega), rho=rho, g=g, water_depth=water_depth)
     rad = [cpt.RadiationProblem(body=cbody, radiating_dof=d, **env) for d in DOFS]
@@ -379,8 +454,6 @@ def solve_frequency(
         [[r.added_mass[d] for d in DOFS] for r in rres]
     ).T  # A[i, j]: force i from motion j
     Bd = np.array([[r.radiation_damping[d] for d in DOFS] for r in rres]).T
-    from capytaine.bem.airy_waves import froude_krylov_force
-
     fk = np.array([[froude_krylov_force(r.problem)[d] for d in DOFS] for r in dres])
     fd = np.array([[r.forces[d] for d in DOFS] for r in dres])
     exc = fk + fd  # (nb, 6)
@@ -388,18 +461,19 @@ def solve_frequency(
     H = -(omega**2) * (body.mass_matrix() + A) - 1j * omega * (Bd + Bv) + body.stiffness
     rao = np.zeros_like(exc) if fixed else np.linalg.solve(H, exc.T).T  # (nb, 6)
 
-    # far field (Kochin functions)
+    # far field (Kochin functions of every problem at once)
+    k = float(rres[0].problem.wavenumber)
     theta = _theta_grid(theta_step)
-    from capytaine.post_pro.kochin import compute_kochin
-
+    src = np.stack([r.sources for r in results], axis=-1)  # (n_all, 6 + nb)
+    H_all = kochin(pr.all_centres, pr.all_areas, src, theta, k, water_depth)
     ff = far_field_drift(
-        np.array([compute_kochin(r, theta) for r in dres]),
-        np.array([compute_kochin(r, theta) for r in rres]),  # DOFS order
+        H_all[6:],
+        H_all[:6],  # DOFS order
         rao,
         beta + math.pi,
         theta,
         omega=float(omega),
-        wavenumber=float(rres[0].problem.wavenumber),
+        wavenumber=k,
         rho=rho,
         g=g,
         water_depth=water_depth,
@@ -407,22 +481,15 @@ def solve_frequency(
     ff[:, 2] -= body.cog[0] * ff[:, 1] - body.cog[1] * ff[:, 0]  # yaw about the CoG's vertical axis
 
     # near field: total velocity on the hull panels, total potential on the waterline
-    k = float(rres[0].problem.wavenumber)
     gf = dict(free_surface=0.0, water_depth=water_depth, wavenumber=k)
-    hull_mesh = cbody.mesh
-    n_hull = hull_mesh.nb_faces
-    full = cbody.mesh_including_lid  # the sources below are in its panel order
-    full = full.merged() if hasattr(full, "merged") else full
-    if not np.allclose(np.asarray(hull_mesh.faces_centers), mesh.centres, atol=1e-6):
-        raise RuntimeError("the hull panels are not in Capytaine's order")
-    src = np.stack([r.sources for r in results], axis=-1)  # (n_all, 6 + nb)
-    p0, p1, owner = mesh.waterline()
-    wpts = 0.5 * (p0 + p1)
-    centres = np.asarray(hull_mesh.faces_centers)
-    nrm = np.asarray(hull_mesh.faces_normals)
+    centres, nrm, wpts = pr.centres, pr.normals, pr.wl_points
+    n_hull = centres.shape[0]
     pts = np.concatenate([centres, wpts])
-    pot = np.asarray(solver.engine.build_S_matrix(pts, full, **gf)) @ src  # (n_hull + m, nprob)
-    index, weights = surface_gradient_operator(mesh.vertices, mesh.faces, centres, nrm, wpts, owner)
+    # the potential S·σ at the collocation points from the influence coefficients of points
+    # (not the solver's own ``potential``: its mesh-to-mesh coefficients differ near the
+    # free surface, and the near field was validated with these)
+    pot = np.asarray(solver.engine.build_S_matrix(pts, pr.full, **gf)) @ src  # (n_hull + m, nprob)
+    index, weights = pr.gradient
     phi = np.empty((beta.size, pts.shape[0]), complex)
     for ib, r in enumerate(dres):
         phi[ib] = pot[:, 6 + ib] + airy_waves_potential(pts, r.problem) + pot[:, :6] @ rao[ib]
@@ -438,17 +505,9 @@ def solve_frequency(
         omega=omega,
         rho=rho,
         g=g,
-        panels=dict(
-            centres=centres,
-            normals=np.asarray(hull_mesh.faces_normals),
-            areas=np.asarray(hull_mesh.faces_areas),
-            velocity=u_tot,
-        ),
+        panels=dict(centres=centres, normals=nrm, areas=pr.areas, velocity=u_tot),
         waterline=dict(
-            points=wpts,
-            normals=mesh.normals[owner],
-            lengths=np.linalg.norm(p1 - p0, axis=1),
-            potential=phi_tot,
+            points=wpts, normals=pr.wl_normals, lengths=pr.wl_lengths, potential=phi_tot
         ),
         mass=body.mass,
         inertia=body.inertia,
@@ -646,12 +705,14 @@ def bem_drift(
         cache.mkdir(parents=True, exist_ok=True)
     bar = Progress(omega.size, label=f"bem {mesh.name} ({mesh.n_panels} panels)", enabled=progress)
     parts = []
+    prepared = None  # built on the first frequency that is not in the cache
     for w in np.sort(omega):
         key = _cache_key(mesh, body, w, beta, rho, g, water_depth, theta_step, fixed)
         path = None if cache is None else cache / f"{mesh.name}_{key}.nc"
         if path is not None and path.exists():
             ds = xr.load_dataset(path)
         else:
+            prepared = prepared or _prepare(mesh, body)
             r = solve_frequency(
                 mesh,
                 body,
@@ -662,6 +723,7 @@ def bem_drift(
                 water_depth=water_depth,
                 fixed=fixed,
                 theta_step=theta_step,
+                prepared=prepared,
             )
             ds = _frequency_dataset(r)
             if path is not None:
