@@ -155,7 +155,9 @@ def test_far_field_drift_equals_capytaines_own_routine():
     from capytaine.io.xarray import kochin_data_array
     from capytaine.post_pro.mean_drift_force import far_field_mean_drift_force
 
-    from jaxtow.bem.solve import _theta_grid, far_field_drift, to_capytaine_mesh
+    from capytaine.post_pro.kochin import compute_kochin
+
+    from jaxtow.bem.solve import _theta_grid, far_field_drift, kochin, to_capytaine_mesh
 
     m = bem.barge2_mesh(panel_size=6.0)
     body = bem.rigid_body(m)
@@ -205,6 +207,19 @@ def test_far_field_drift_equals_capytaines_own_routine():
         )
         assert np.abs(want[:, 2]).max() > 1e3  # a real yaw moment, not a symmetric zero
         np.testing.assert_allclose(got, want, rtol=1e-9, atol=1e-9 * np.abs(want).max())
+        # the Kochin functions of every problem in one product equal Capytaine's, problem by
+        # problem (the pipeline's far field is built from them)
+        full = cb.mesh_including_lid
+        H = kochin(
+            np.asarray(full.faces_centers),
+            np.asarray(full.faces_areas),
+            np.stack([r.sources for r in res], axis=-1),
+            theta,
+            float(res[0].problem.wavenumber),
+            depth,
+        )
+        ref_h = np.array([compute_kochin(r, theta) for r in res])
+        np.testing.assert_allclose(H, ref_h, rtol=1e-12, atol=1e-12 * np.abs(ref_h).max())
     with pytest.raises(ValueError, match="theta"):
         far_field_drift(
             ds.kochin_diffraction.values[0],

@@ -1,0 +1,126 @@
+"""Benchmark: what the persistent compilation cache saves a user, and what tracing and
+compiling the wave-map kernel cost.
+
+1. Commands, each run twice as a user would, in fresh processes sharing one fresh cache
+   folder (``JAXTOW_COMPILE_CACHE``): the first run compiles every kernel and stores it, the
+   second reads them back. ``jaxtow calm`` (the README's main job) and ``jaxtow report
+   waves`` on a small grid (``--n 5``, one source and form, no attribution or slow-drift
+   runs: the full report takes about an hour on 2 cores). Printed: both times and their
+   ratio (target: the second run at least 2x faster).
+2. The sweep kernel of the wave study (Barge 2a, regular head waves, the shipped near-field
+   database, 401 scan headings, as `jaxtow.reports.WaveStudy` runs it), in a fresh process
+   into an empty cache and again from the cache: the time to trace it (Python, every run),
+   to lower it and to compile it (XLA; read back from the cache the second time).
+
+    python benchmarks/bench_compile.py [--json out.json] [--skip-commands]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+RUN = "import sys; from jaxtow.cli import main; sys.exit(main())"
+
+COMMANDS = {
+    "calm": ["calm"],
+    "report waves (n = 5)": [
+        "report",
+        "waves",
+        "--n",
+        "5",
+        "--n-grid",
+        "101",
+        "--t1",
+        "60",
+        "--sources",
+        "near_field",
+        "--forms",
+        "aranha",
+        "--no-attribution",
+        "--slow-drift-hours",
+        "0",
+        "--quiet",
+    ],
+}
+
+KERNEL = """
+import json, sys, time
+import jax, jax.numpy as jnp
+jax.config.update("jax_enable_x64", True)
+from jaxtow import enable_compile_cache
+enable_compile_cache(sys.argv[1])
+from jaxtow.reports import WaveStudy
+from jaxtow._sweep import make_batched_kernel
+st = WaveStudy(n=5, n_grid=401, compile_cache=False)
+model = st.wave_model("2a")
+kernel = make_batched_kernel(method="numerical", n_grid=401, max_roots=4, psi_range=3.141592653589793 / 2,
+                             routh_hurwitz=True, eig_method="lapack").jitted
+params = {"l0": jnp.linspace(0.5, 2.5, 64), "external.omega": jnp.linspace(0.4, 2.0, 64)}
+t0 = time.perf_counter(); traced = kernel.trace(model, params)
+t1 = time.perf_counter(); lowered = traced.lower()
+t2 = time.perf_counter(); compiled = lowered.compile()
+t3 = time.perf_counter(); jax.block_until_ready(compiled(model, params)); t4 = time.perf_counter()
+print(json.dumps(dict(trace_s=t1 - t0, lower_s=t2 - t1, compile_s=t3 - t2, run_64_points_s=t4 - t3)))
+"""
+
+
+def _run(args, env, cwd):
+    t = time.perf_counter()
+    subprocess.run(
+        [sys.executable, "-c", RUN, *args], env=env, cwd=cwd, check=True, capture_output=True
+    )
+    return time.perf_counter() - t
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
+    ap.add_argument("--json", default=None)
+    ap.add_argument("--skip-commands", action="store_true", help="only the kernel timings")
+    args = ap.parse_args(argv)
+    res: dict = {"commands": {}, "wave_kernel": {}}
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        if not args.skip_commands:
+            for name, cmd in COMMANDS.items():
+                cache = tmp / f"xla_{cmd[0]}"
+                env = dict(os.environ, JAXTOW_COMPILE_CACHE=str(cache))
+                out = tmp / f"out_{cmd[0]}"
+                times = [_run([*cmd, "--out", str(out / str(i))], env, tmp) for i in range(2)]
+                entries = len(list(cache.glob("*-cache")))
+                res["commands"][name] = dict(
+                    first_s=times[0], second_s=times[1], ratio=times[0] / times[1], entries=entries
+                )
+                print(
+                    f"jaxtow {name}: first run {times[0]:.1f} s, second {times[1]:.1f} s "
+                    f"({times[0] / times[1]:.2f}x; target >= 2x), {entries} cached programs"
+                )
+        cache = tmp / "xla_kernel"
+        for label in ("cold", "from cache"):
+            out = subprocess.run(
+                [sys.executable, "-c", KERNEL, str(cache)],
+                check=True,
+                capture_output=True,
+                text=True,
+            )
+            r = json.loads(out.stdout.strip().splitlines()[-1])
+            res["wave_kernel"][label] = r
+            print(
+                f"wave-map kernel, {label}: trace {r['trace_s']:.1f} s, lower {r['lower_s']:.1f} s, "
+                f"compile {r['compile_s']:.1f} s; 64 points {r['run_64_points_s']:.2f} s"
+            )
+    if args.json:
+        Path(args.json).write_text(json.dumps(res, indent=2))
+    return res
+
+
+if __name__ == "__main__":
+    main()
