@@ -153,9 +153,8 @@ def test_far_field_drift_equals_capytaines_own_routine():
     import capytaine as cpt
     import xarray as xr
     from capytaine.io.xarray import kochin_data_array
-    from capytaine.post_pro.mean_drift_force import far_field_mean_drift_force
-
     from capytaine.post_pro.kochin import compute_kochin
+    from capytaine.post_pro.mean_drift_force import far_field_mean_drift_force
 
     from jaxtow.bem.solve import _theta_grid, far_field_drift, kochin, to_capytaine_mesh
 
