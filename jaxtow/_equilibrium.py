@@ -34,7 +34,7 @@ from jaxtyping import Array, Bool, Float, Int
 from . import _rules as V
 from ._dynamics import TowModel, force_breakdown, vector_field
 from ._roots import bisect, brackets, polish
-from ._rules import check_now, guard
+from ._rules import check_now, guard, is_concrete
 from ._towline import Towline
 from .forces._base import NoExternalForce
 
@@ -234,7 +234,13 @@ def equilibria(
     for the jittable form used inside sweeps.
     """
     check_now(model)  # a clear error here rather than from inside the compiled call
-    eqs = _equilibria_jit(model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range)
+    # the compiled call checks only what check_now could not see (a traced model, when
+    # called under a user's jit): a program with run-time checks holds host callbacks,
+    # which JAX's persistent compilation cache never stores
+    traced = not all(is_concrete(x) for x in jax.tree_util.tree_leaves(model))
+    eqs = _equilibria_jit(
+        model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range, check=traced
+    )
     if int(eqs.n_roots) > max_roots:  # refuse a silently truncated result
         raise ValueError(
             f"{int(eqs.n_roots)} equilibria found but max_roots={max_roots}; raise max_roots"
@@ -244,7 +250,7 @@ def equilibria(
 
 _equilibria_jit = jax.jit(
     equilibria_fixed,
-    static_argnames=("n_grid", "max_roots", "psi_range", "max_steps"),
+    static_argnames=("n_grid", "max_roots", "psi_range", "max_steps", "check"),
 )
 
 

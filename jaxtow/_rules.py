@@ -196,8 +196,15 @@ def guard(tree, checks):
 
     `eqx.error_if` is applied to the whole output, so the check cannot be removed as dead
     code while any output is used, and it raises under jit and vmap with the message that
-    names the parameter.
+    names the parameter. A concrete predicate (an eager call) is checked here instead, with
+    a `ValueError`: an eager `eqx.error_if` compiles a small program holding a host
+    callback on every call, which JAX's persistent cache never stores (63 of them in each
+    ``jaxtow calm``).
     """
     for pred, msg in checks:
-        tree = eqx.error_if(tree, pred, msg)
+        if is_concrete(pred):
+            if bool(np.any(np.asarray(pred))):
+                raise ValueError(msg)
+        else:
+            tree = eqx.error_if(tree, pred, msg)
     return tree
