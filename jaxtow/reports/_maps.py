@@ -15,11 +15,19 @@ OMEGA_RANGE = (0.3, 2.0)
 MAP_NAMES = ("2a_l0_omega", "2b_l0_omega", "2a_l0_tp", "2b_l0_tp")
 
 
+#: Points per compiled call of the wave study's maps. Every map of one model structure then
+#: shares one compiled kernel (a chunk sized to each map compiled one per map size), and the
+#: working memory stays bounded: an irregular-sea point holds the drift integral of every
+#: scanned heading batch, and a 2048-point chunk of the (l0', Tp) map needed over 10 GB.
+WAVE_CHUNK = 256
+
+
 def run_map(
     model, grid: dict, *, n_grid: int = 401, progress: bool = False, specialise: bool = True
 ):
     """One sweep of the wave study (up to 4 equilibria per point, eigenvalues by LAPACK, the
-    kernel specialised to the model's QTF unless ``specialise=False``) as a Dataset."""
+    kernel specialised to the model's QTF unless ``specialise=False``) as a Dataset, in
+    chunks of `WAVE_CHUNK` points."""
     from .._sweep import sweep
 
     return sweep(
@@ -30,6 +38,7 @@ def run_map(
         routh_hurwitz=False,
         progress=progress,
         specialise=specialise,
+        chunk_size=WAVE_CHUNK,
     )
 
 
