@@ -12,7 +12,7 @@ compiling the wave-map kernel cost.
    into an empty cache and again from the cache: the time to trace it (Python, every run),
    to lower it and to compile it (XLA; read back from the cache the second time).
 
-    python benchmarks/bench_compile.py [--json out.json] [--skip-commands]
+    python benchmarks/bench_compile.py [--json out.json] [--skip-commands] [--commands calm]
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ RUN = "import sys; from jaxtow.cli import main; sys.exit(main())"
 
 COMMANDS = {
     "calm": ["calm"],
-    "report waves (n = 5)": [
+    "report-waves": [  # report waves on a 5-point grid
         "report",
         "waves",
         "--n",
@@ -85,12 +85,16 @@ def main(argv=None):
     )
     ap.add_argument("--json", default=None)
     ap.add_argument("--skip-commands", action="store_true", help="only the kernel timings")
+    ap.add_argument(
+        "--commands", default=",".join(COMMANDS), help=f"comma-separated, of {list(COMMANDS)}"
+    )
     args = ap.parse_args(argv)
     res: dict = {"commands": {}, "wave_kernel": {}}
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         if not args.skip_commands:
-            for name, cmd in COMMANDS.items():
+            for name in args.commands.split(","):
+                cmd = COMMANDS[name]
                 cache = tmp / f"xla_{cmd[0]}"
                 env = dict(os.environ, JAXTOW_COMPILE_CACHE=str(cache))
                 out = tmp / f"out_{cmd[0]}"
