@@ -349,6 +349,7 @@ def test_report_waves_writes_claims(tmp_path, capsys):
         ]
     )
     claims = json.loads((tmp_path / "claims.json").read_text())
+    assert not (tmp_path / "claims.partial.json").exists()  # the partial file is replaced
     ids = CLAIM_IDS + RESISTANCE_CLAIM_IDS
     combos = {(c["source_key"], c["sailing_form"]) for c in claims}
     assert combos == {("near_field", "aranha"), ("far_field", "aranha")}

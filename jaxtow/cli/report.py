@@ -325,6 +325,9 @@ def cmd_report(args):
                 f"claims computed: {SOURCE_NAMES.get(_key(s), _key(s))}, {f} ({time.perf_counter() - t0:.0f} s)",
                 flush=True,
             )
+            # kept as each study finishes: the full report runs for hours on 2 cores, and a
+            # run stopped on the way keeps the claims it has (overwritten at the end)
+            write_file(out / "claims.partial.json", json.dumps(claims, indent=2, default=float))
     # attribution of every claim of the primary study that does not reproduce
     variants = _panel_variants(args.panel_variants) if args.panel_variants else None
     attributions = {}
@@ -355,6 +358,7 @@ def cmd_report(args):
         )
     summary["claims"] = claims
     write_file(out / "claims.json", json.dumps(claims, indent=2, default=float))
+    (out / "claims.partial.json").unlink(missing_ok=True)
     write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     table = claims_table(claims)
     write_file(
