@@ -401,7 +401,7 @@ def test_cli_bem_writes_qtf_databases_and_figures(tmp_path, capsys):
 # ---------------------------------------------------------------- without the extra
 
 
-def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it():
+def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it(tmp_path):
     code = (
         "import sys\nimport jaxtow as jt\njt.bem.box_barge_mesh()\n"
         "print('IMPORTED', 'capytaine' in sys.modules, callable(jt.bem.box_barge_drift))\n"
@@ -413,8 +413,13 @@ def test_jaxtow_never_imports_capytaine_and_says_how_to_install_it():
         "try:\n    from jaxtow.cli import main; main(['bem', 'barge1', '--out', 'x'])\nexcept SystemExit as e:\n"
         "    print('EXIT', e)\n"
     )
-    r = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, timeout=300, check=False
+    r = subprocess.run(  # in tmp_path: the failed run's manifest lands in its --out folder
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=False,
+        cwd=tmp_path,
     )
     assert r.returncode == 0, r.stderr
     assert (
