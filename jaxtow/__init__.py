@@ -21,94 +21,103 @@ Importing jaxtow enables float64 in JAX (see `jaxtow._config`; set ``JAXTOW_ENAB
 before import to opt out).
 """
 
-from importlib import import_module as _import_module
 from importlib.metadata import PackageNotFoundError as _NotFound, version as _version
+from typing import TYPE_CHECKING
 
 from ._config import enable_x64_from_environment as _enable_x64
+from ._lazy import attach as _attach
 
 _enable_x64()
 
-from . import (
-    continuation as continuation,
-    design as design,
-    distributed as distributed,
-    drift as drift,
-    forces as forces,
-    lines as lines,
-    presets as presets,
-    reports as reports,
-    resistance as resistance,
-    study as study,
-    waves as waves,
-)
-from ._compile_cache import enable_compile_cache as enable_compile_cache
-from ._dynamics import (
-    STATE_NAMES as STATE_NAMES,
-    ForceBreakdown as ForceBreakdown,
-    TowModel as TowModel,
-    all_valid as all_valid,
-    at_tug_speed as at_tug_speed,
-    force_breakdown as force_breakdown,
-    sway_offset as sway_offset,
-    validity as validity,
-    vector_field as vector_field,
-)
-from ._equilibrium import (
-    Equilibria as Equilibria,
-    analytic_equilibria as analytic_equilibria,
-    equilibria as equilibria,
-    equilibria_fixed as equilibria_fixed,
-    heading_residual as heading_residual,
-)
-from ._metrics import (
-    damping_ratio as damping_ratio,
-    fishtail_metrics as fishtail_metrics,
-    force_history as force_history,
-    trajectory as trajectory,
-)
-from ._parameters import get_parameter as get_parameter, with_parameters as with_parameters
-from ._rules import (
-    FINITE as FINITE,
-    NONNEGATIVE as NONNEGATIVE,
-    POSITIVE as POSITIVE,
-    Rule as Rule,
-    at_least as at_least,
-    in_range as in_range,
-    rule_field as rule_field,
-)
-from ._simulate import (
-    Simulation as Simulation,
-    initial_state as initial_state,
-    simulate as simulate,
-    simulate_batch as simulate_batch,
-)
-from ._stability import (
-    STABILITY_LABELS as STABILITY_LABELS,
-    STABILITY_TOL as STABILITY_TOL,
-    StabilityResult as StabilityResult,
-    characteristic_polynomial as characteristic_polynomial,
-    classify as classify,
-    eigenvalues as eigenvalues,
-    hurwitz_determinants as hurwitz_determinants,
-    jacobian as jacobian,
-    max_real_eigenvalue as max_real_eigenvalue,
-    routh_hurwitz_stable as routh_hurwitz_stable,
-    spectral_abscissa as spectral_abscissa,
-    stability as stability,
-)
-from ._sweep import sweep as sweep, sweep_arrays as sweep_arrays
-from ._towline import (
-    AbstractTowline as AbstractTowline,
-    Bridle as Bridle,
-    CatenaryTowline as CatenaryTowline,
-    CompositeTowline as CompositeTowline,
-    PowerLawTowline as PowerLawTowline,
-    Towline as Towline,
-    catenary_span as catenary_span,
-    composite_geometry as composite_geometry,
-)
-from ._units import RHO_SEA as RHO_SEA, G as G, Scales as Scales, froude_number as froude_number
-from ._vessel import VESSEL_PARAMETERS as VESSEL_PARAMETERS, Vessel as Vessel
+# The public names, loaded on first use (`jaxtow._lazy`): `import jaxtow` loads none of JAX,
+# xarray, matplotlib or Capytaine until a name that needs them is used.
+if TYPE_CHECKING:
+    from . import (
+        bem as bem,
+        cli as cli,
+        continuation as continuation,
+        design as design,
+        distributed as distributed,
+        drift as drift,
+        forces as forces,
+        io as io,
+        lines as lines,
+        plotting as plotting,
+        presets as presets,
+        reports as reports,
+        resistance as resistance,
+        study as study,
+        tow as tow,
+        waves as waves,
+    )
+    from ._compile_cache import enable_compile_cache as enable_compile_cache
+    from ._dynamics import (
+        STATE_NAMES as STATE_NAMES,
+        ForceBreakdown as ForceBreakdown,
+        TowModel as TowModel,
+        all_valid as all_valid,
+        at_tug_speed as at_tug_speed,
+        force_breakdown as force_breakdown,
+        sway_offset as sway_offset,
+        validity as validity,
+        vector_field as vector_field,
+    )
+    from ._equilibrium import (
+        Equilibria as Equilibria,
+        analytic_equilibria as analytic_equilibria,
+        equilibria as equilibria,
+        equilibria_fixed as equilibria_fixed,
+        heading_residual as heading_residual,
+    )
+    from ._metrics import (
+        damping_ratio as damping_ratio,
+        fishtail_metrics as fishtail_metrics,
+        force_history as force_history,
+        trajectory as trajectory,
+    )
+    from ._parameters import get_parameter as get_parameter, with_parameters as with_parameters
+    from ._rules import (
+        FINITE as FINITE,
+        NONNEGATIVE as NONNEGATIVE,
+        POSITIVE as POSITIVE,
+        Rule as Rule,
+        at_least as at_least,
+        in_range as in_range,
+        rule_field as rule_field,
+    )
+    from ._simulate import (
+        Simulation as Simulation,
+        initial_state as initial_state,
+        simulate as simulate,
+        simulate_batch as simulate_batch,
+    )
+    from ._stability import (
+        STABILITY_LABELS as STABILITY_LABELS,
+        STABILITY_TOL as STABILITY_TOL,
+        StabilityResult as StabilityResult,
+        characteristic_polynomial as characteristic_polynomial,
+        classify as classify,
+        eigenvalues as eigenvalues,
+        hurwitz_determinants as hurwitz_determinants,
+        jacobian as jacobian,
+        max_real_eigenvalue as max_real_eigenvalue,
+        routh_hurwitz_stable as routh_hurwitz_stable,
+        spectral_abscissa as spectral_abscissa,
+        stability as stability,
+    )
+    from ._sweep import sweep as sweep, sweep_arrays as sweep_arrays
+    from ._towline import (
+        AbstractTowline as AbstractTowline,
+        Bridle as Bridle,
+        CatenaryTowline as CatenaryTowline,
+        CompositeTowline as CompositeTowline,
+        PowerLawTowline as PowerLawTowline,
+        Towline as Towline,
+        catenary_span as catenary_span,
+        composite_geometry as composite_geometry,
+    )
+    from ._units import RHO_SEA as RHO_SEA, G as G, Scales as Scales, froude_number as froude_number
+    from ._vessel import VESSEL_PARAMETERS as VESSEL_PARAMETERS, Vessel as Vessel
 
 __all__ = [
     "FINITE",
@@ -178,12 +187,4 @@ try:
 except _NotFound:  # running from a source tree that was never installed
     __version__ = "0+unknown"
 
-#: Subpackages loaded on first use: the numerics never import xarray or matplotlib, and
-#: nothing imports Capytaine until a panel solve is asked for.
-_LAZY = ("io", "plotting", "bem", "cli", "tow")
-
-
-def __getattr__(name):
-    if name in _LAZY:
-        return _import_module(f".{name}", __name__)
-    raise AttributeError(f"module 'jaxtow' has no attribute {name!r}")
+__getattr__, __dir__ = _attach(__name__, __file__)

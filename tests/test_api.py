@@ -96,3 +96,56 @@ def test_version_comes_from_the_package_metadata():
     from importlib.metadata import version
 
     assert jaxtow.__version__ == version("jaxtow")
+
+
+def _fresh(code: str, **env) -> str:
+    import os
+    import subprocess
+    import sys
+
+    r = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=True,
+        env={**os.environ, **env},
+    )
+    return r.stdout
+
+
+def test_import_loads_nothing_heavy_until_a_name_is_used():
+    """`import jaxtow` and `import jaxtow.cli` load neither JAX nor xarray, matplotlib or
+    Capytaine; the first use of a name loads its module, and float64 is on as before."""
+    out = _fresh(
+        "import sys, jaxtow, jaxtow.cli\n"
+        "heavy = ('jax', 'xarray', 'matplotlib', 'capytaine', 'equinox')\n"
+        "print('LOADED', [m for m in heavy if m in sys.modules])\n"
+        "import jax.numpy as jnp\n"
+        "print('DTYPE', jnp.ones(1).dtype)\n"
+        "print('NAME', jaxtow.TowModel.__module__, 'jaxtow.drift' in sys.modules)\n"
+        "print('DIR', set(jaxtow.__all__) <= set(dir(jaxtow)))\n"
+    )
+    assert "LOADED []" in out
+    assert "DTYPE float64" in out
+    assert "NAME jaxtow._dynamics" in out
+    assert "DIR True" in out
+    # the opt-out still works, before and after JAX is imported
+    assert "float32" in _fresh(
+        "import jaxtow, jax.numpy as jnp; print(jnp.ones(1).dtype)", JAXTOW_ENABLE_X64="0"
+    )
+    assert "float64" in _fresh("import jax, jaxtow, jax.numpy as jnp; print(jnp.ones(1).dtype)")
+    with pytest.raises(AttributeError, match="no attribute 'nonexistent'"):
+        _ = jaxtow.nonexistent  # type: ignore[attr-defined]
+
+
+def test_lazy_table_reads_the_type_checking_block():
+    from jaxtow._lazy import lazy_table
+
+    src = (
+        "from typing import TYPE_CHECKING\nif TYPE_CHECKING:\n"
+        "    from . import sub as sub\n    from ._impl import f as f, g as h\n"
+    )
+    assert lazy_table(src) == {"sub": (None, "sub"), "f": ("_impl", "f"), "h": ("_impl", "g")}
+    with pytest.raises(ValueError, match="relative"):
+        lazy_table("if TYPE_CHECKING:\n    import numpy\n")

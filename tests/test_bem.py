@@ -392,6 +392,21 @@ def test_cli_bem_writes_qtf_databases_and_figures(tmp_path, capsys):
     assert "fewer than 6 panels per wavelength" in capsys.readouterr().out
     q = jt.io.load_qtf(out / "qtf_near_field.nc")
     assert np.asarray(q.beta).min() == pytest.approx(-math.radians(30))
+    # the same request again: the folder is up to date and nothing is rewritten
+    stamp = (out / "bem.nc").stat().st_mtime_ns
+    main(["bem", str(cfg), "--out", str(out), "--quiet"])
+    assert "is up to date" in capsys.readouterr().out
+    assert (out / "bem.nc").stat().st_mtime_ns == stamp
+    # a missing output, another request or --force runs again
+    (out / "fig_qtf.png").unlink()
+    main(["bem", str(cfg), "--out", str(out), "--quiet"])
+    assert "up to date" not in capsys.readouterr().out and (out / "fig_qtf.png").exists()
+    stamp = (out / "bem.nc").stat().st_mtime_ns
+    main(["bem", str(cfg), "--out", str(out), "--quiet", "--force"])
+    assert "up to date" not in capsys.readouterr().out
+    assert (out / "bem.nc").stat().st_mtime_ns > stamp
+    main(["bem", str(cfg), "--out", str(out), "--quiet", "--n-omega", "2"])
+    assert "up to date" not in capsys.readouterr().out
     with pytest.raises(SystemExit, match="unknown key"):
         bad = tmp_path / "bad.toml"
         bad.write_text('[hull]\nkind = "box"\npanelsize = 1.0\n')

@@ -85,6 +85,23 @@ def main(argv=None) -> int:
     no_cache = "--no-compile-cache" in argv  # accepted before or after the subcommand
     argv = [a for a in argv if a != "--no-compile-cache"]
     args = build_parser().parse_args(argv)
+    out = getattr(args, "out", None)
+    lock = _lock_output(out)
+    fingerprint = getattr(args, "fingerprint", None)
+    request = fingerprint(args) if fingerprint is not None else None
+    if request is not None and not getattr(args, "force", False):
+        from ._manifest import up_to_date
+
+        done = up_to_date(out, request)
+        if done is not None:
+            print(
+                f"jaxtow {args.command}: {out} is up to date: its run of {done['finished']} "
+                f"asked the same and wrote {len(done['outputs'])} files, all still there "
+                "(--force recomputes)"
+            )
+            if lock is not None:
+                lock.close()
+            return 0
     import matplotlib
 
     from .._compile_cache import enable_compile_cache
@@ -96,13 +113,11 @@ def main(argv=None) -> int:
             raise SystemExit(f"error: {e}") from None
 
     matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
-    out = getattr(args, "out", None)
-    lock = _lock_output(out)
     manifest = None
     if out is not None:
         from ._manifest import Manifest
 
-        manifest = Manifest(out, args, argv)
+        manifest = Manifest(out, args, argv, request=request)
         manifest.start()
     status, error = "failed", None
     try:

@@ -8,6 +8,10 @@ documented estimates of `jaxtow.presets.ASSUMPTIONS` (the values the thesis lack
 them a result used is in its own attributes), and the files the run wrote into the folder.
 A folder whose manifest says ``running`` with no run holding its lock was left by a killed
 process.
+
+A command that can tell what decides its outputs (``jaxtow bem``: `jaxtow.cli.bem.fingerprint`)
+records that digest as ``request``; run again with the same request into a folder whose run
+finished and whose outputs are all there, it has nothing to do (`up_to_date`).
 """
 
 from __future__ import annotations
@@ -44,10 +48,10 @@ def _plain(v):
 class Manifest:
     """The manifest of one run into ``out``: `start` writes it, `end` completes it."""
 
-    def __init__(self, out, args, argv):
+    def __init__(self, out, args, argv, request: str | None = None):
         self.path = Path(out) / NAME
         self.t0 = time.time()
-        options = {k: _plain(v) for k, v in vars(args).items() if k not in ("func",)}
+        options = {k: _plain(v) for k, v in vars(args).items() if k not in ("func", "fingerprint")}
         from ..presets import ASSUMPTIONS
 
         self.record = {
@@ -60,6 +64,7 @@ class Manifest:
             "finished": None,
             "status": "running",
             "outputs": [],
+            "request": request,
         }
 
     def start(self) -> None:
@@ -96,6 +101,26 @@ class Manifest:
 
         with atomic_path(self.path) as tmp:
             tmp.write_text(json.dumps(self.record, indent=2, default=str) + "\n")
+
+
+def up_to_date(out, request: str | None) -> dict | None:
+    """The finished manifest in ``out`` whose ``request`` is ``request`` and whose outputs are
+    all present, else None (also for a None request)."""
+    if request is None or out is None:
+        return None
+    folder = Path(out)
+    try:
+        record = json.loads((folder / NAME).read_text())
+    except (OSError, ValueError):
+        return None
+    if not isinstance(record, dict) or record.get("status") != "finished":
+        return None
+    outputs = record.get("outputs") or []
+    if record.get("request") != request or not outputs:
+        return None
+    if not all((folder / rel).is_file() for rel in outputs):
+        return None
+    return record
 
 
 def _now() -> str:

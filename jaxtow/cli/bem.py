@@ -17,10 +17,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .._units import RHO_SEA, G
 from ..io._atomic import save_figure, save_netcdf, write_file
 from ._common import positive_float, positive_int
-from ._config import config_dispatch, read_config as _read_config
+from ._config import config_dispatch, config_text, read_config as _read_config
 
 BUILTIN = {"barge1": "bem_barge1.toml", "barge2": "bem_barge2.toml"}
 _KEYS = {
@@ -141,6 +140,7 @@ def cmd_bem(args):
             f"{bem.solve.MIN_PANELS_PER_WAVELENGTH:g} panels per wavelength (dataset variable 'resolved'); "
             "use a smaller --panel-size"
         )
+    from .._units import RHO_SEA, G
     from ..io import save_qtf
 
     sym = bool(np.isclose(float(beta[0]), 0.0))
@@ -214,11 +214,61 @@ def add_parser(sub):
     )
     r.add_argument("--quiet", action="store_true", help="no progress bar")
     r.add_argument("--show-config", action="store_true", help="print the config and exit")
-    r.set_defaults(func=_dispatch)
+    r.add_argument(
+        "--force",
+        action="store_true",
+        help="recompute even where OUT already holds the finished outputs of the same request",
+    )
+    r.set_defaults(func=_dispatch, fingerprint=fingerprint)
 
 
 #: The built-in tows' panel configs (one spelling of the built-ins everywhere).
 TOW_CONFIGS = {"barge1": "barge1", "barge2a": "barge2", "barge2b": "barge2"}
+
+
+def fingerprint(args) -> str | None:
+    """A digest of everything that decides the outputs of ``jaxtow bem``: the config's text
+    (and the mesh file it names), the panel size, frequency count and mesh study asked for,
+    the versions of jaxtow and Capytaine and the source of jaxtow's panel code. Where a
+    finished run into the same folder recorded the same digest and its outputs are all
+    there, the command has nothing to do (`jaxtow.cli._manifest.up_to_date`). None (always
+    run) for a tow file, a config that cannot be read, or ``--show-config``."""
+    import hashlib
+    import tomllib
+    from importlib.metadata import PackageNotFoundError, version
+
+    spec = TOW_CONFIGS.get(args.config, args.config)
+    if args.show_config or (spec not in BUILTIN and not Path(str(spec)).is_file()):
+        return None
+    try:
+        text = config_text(spec, BUILTIN)
+        cfg = tomllib.loads(text)
+    except (ValueError, OSError, tomllib.TOMLDecodeError):
+        return None
+    if "vessel" in cfg:  # a tow file: its mesh and estimates resolve through load_tow
+        return None
+    digest = hashlib.sha256()
+
+    def add(label, data: bytes):
+        digest.update(f"{label}:{len(data)}:".encode() + data)
+
+    add("config", text.encode())
+    mesh = cfg.get("hull", {}).get("path") if cfg.get("hull", {}).get("kind") == "file" else None
+    if mesh is not None:
+        try:
+            add("mesh", Path(mesh).read_bytes())
+        except OSError:
+            return None
+    add("options", repr((args.panel_size, args.n_omega, args.convergence)).encode())
+    for pkg in ("jaxtow", "capytaine"):
+        try:
+            add(pkg, version(pkg).encode())
+        except PackageNotFoundError:
+            add(pkg, b"")
+    here = Path(__file__).resolve()
+    for src in sorted((here.parent.parent / "bem").glob("*.py")) + [here]:
+        add(src.name, src.read_bytes())
+    return digest.hexdigest()
 
 
 def _dispatch(args):

@@ -13,11 +13,12 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import reports as W
 from ..io._atomic import write_file
 
 
 def _straight(ds, field="max_real"):
+    from .. import reports as W
+
     return W.straight(ds, field)
 
 
@@ -285,7 +286,7 @@ def plan(args):
 
 
 def cmd_report(args):
-    from .. import presets
+    from .. import presets, reports as W
     from ..drift._database import drift_source
 
     out = Path(args.out)

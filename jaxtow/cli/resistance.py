@@ -10,7 +10,6 @@ from pathlib import Path
 import numpy as np
 
 from ..io._atomic import write_file
-from ..reports._resistance import eqx_tp as eqx_tp, evaluate as evaluate, resistance_table
 from ._config import config_dispatch, read_config as _read_config
 
 NM = 1852.0  # m
@@ -133,6 +132,8 @@ def format_table(rows: list, tug, route_length) -> str:
         f"top speed {float(tug.max_speed):g} m/s"
         + (f"; route {route_length / NM:g} nm" if route_length else "")
     )
+    from ..reports._resistance import resistance_table
+
     cols, body = resistance_table(rows)
     table = [list(cols), *body]
     notes = [f"! {r['sea_state']}: {r['message']}" for r in rows if r["message"]]
@@ -200,6 +201,7 @@ def cmd_resistance(args):
     from ..io import resistance_dataset, save_dataset
     from ..plotting.calm import save
     from ..plotting.resistance import plot_budget_vs_speed, plot_budget_vs_tp, plot_operating_point
+    from ..reports._resistance import evaluate
     from ..waves import physical_tp_range
 
     tow, tug, seas, heading, route = inputs(args.config)

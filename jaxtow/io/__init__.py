@@ -1,30 +1,37 @@
 """File formats and labelled results (xarray / NetCDF). Numerical modules never import this."""
 
-from .dataset import (
-    load_dataset as load_dataset,
-    nan_audit as nan_audit,
-    save_dataset as save_dataset,
-    sweep_dataset as sweep_dataset,
-)
-from .design import design_dataset as design_dataset, sensitivity_dataset as sensitivity_dataset
-from .drift_methods import drift_methods_dataset as drift_methods_dataset
-from .resistance import (
-    read_coefficient_table as read_coefficient_table,
-    resistance_dataset as resistance_dataset,
-)
-from .wamit import (
-    complete_table as complete_table,
-    load_qtf as load_qtf,
-    qtf_from_capytaine as qtf_from_capytaine,
-    read_capytaine_drift as read_capytaine_drift,
-    read_drift_file as read_drift_file,
-    read_qtf as read_qtf,
-    read_wamit_drift as read_wamit_drift,
-    read_wamit_qtf as read_wamit_qtf,
-    save_qtf as save_qtf,
-    write_wamit_drift as write_wamit_drift,
-    write_wamit_qtf as write_wamit_qtf,
-)
+from typing import TYPE_CHECKING
+
+from .._lazy import attach as _attach
+
+# loaded on first use (`jaxtow._lazy`): the command line's file helpers in `jaxtow.io._atomic`
+# do not load xarray
+if TYPE_CHECKING:
+    from .dataset import (
+        load_dataset as load_dataset,
+        nan_audit as nan_audit,
+        save_dataset as save_dataset,
+        sweep_dataset as sweep_dataset,
+    )
+    from .design import design_dataset as design_dataset, sensitivity_dataset as sensitivity_dataset
+    from .drift_methods import drift_methods_dataset as drift_methods_dataset
+    from .resistance import (
+        read_coefficient_table as read_coefficient_table,
+        resistance_dataset as resistance_dataset,
+    )
+    from .wamit import (
+        complete_table as complete_table,
+        load_qtf as load_qtf,
+        qtf_from_capytaine as qtf_from_capytaine,
+        read_capytaine_drift as read_capytaine_drift,
+        read_drift_file as read_drift_file,
+        read_qtf as read_qtf,
+        read_wamit_drift as read_wamit_drift,
+        read_wamit_qtf as read_wamit_qtf,
+        save_qtf as save_qtf,
+        write_wamit_drift as write_wamit_drift,
+        write_wamit_qtf as write_wamit_qtf,
+    )
 
 __all__ = [
     "load_dataset",
@@ -48,3 +55,5 @@ __all__ = [
     "write_wamit_drift",
     "write_wamit_qtf",
 ]
+
+__getattr__, __dir__ = _attach(__name__, __file__)
