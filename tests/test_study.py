@@ -316,11 +316,12 @@ def test_claims_table_has_a_column_per_source_and_form():
     )
 
 
-@pytest.mark.heavy  # reproduction scale: `pytest -m heavy` (not in CI's time budget)
+@pytest.mark.slow  # 5 to 10 min on 2 cores, most of it compiling the report's kernels
 def test_report_waves_writes_claims(tmp_path, capsys):
     """The whole report on a small grid, with two drift sources (the near field and the far
     field, which share compiled kernels; the default plan of three sources and two forms is
-    the test above) and without the attribution re-runs (too slow for CI on 2 cores): every
+    the test above) and without the attribution re-runs (their own test is
+    `test_attribution_reruns_the_claim_and_gives_the_gradient_at_its_critical_point`): every
     claim under each source, the slowly varying drift runs, figures and datasets with their
     drift source and validity, and claim numbers equal to the maps'."""
     from jaxtow.cli import main
