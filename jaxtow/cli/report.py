@@ -341,8 +341,10 @@ def cmd_report(args):
                 c["attribution"] = a
                 attributions[c["id"]] = a
                 print(
-                    f"attributed: {c['id']}: flipped by {a['flipped_by'] or 'none of the estimates'}"
+                    f"attributed: {c['id']}: flipped by {a['flipped_by'] or 'none of the estimates'}",
+                    flush=True,
                 )
+                write_file(out / "claims.partial.json", json.dumps(claims, indent=2, default=float))
     # slowly varying drift in the time domain
     if args.slow_drift_hours > 0:
         from ..plotting.calm import save
