@@ -291,6 +291,47 @@ def test_report_plan_covers_three_sources_and_two_forms():
     assert plan(args) == ("standin", ["standin", "near_field", "far_field"], ["thesis", "aranha"])
 
 
+def test_attribution_text_lists_every_estimate_and_what_flips_the_claim():
+    from jaxtow.cli.report import attribution_text
+
+    run = dict(value="x 0.8", reproduced=True, measured={"fraction_stable": 1.0})
+    keep = dict(value="x 1.2", reproduced=False, measured={"fraction_stable": 0.62, "x": [1, 2]})
+    claim = dict(
+        id="irregular_sea_keeps_2a_stable",
+        claim="Barge 2a stays stable",
+        reproduced=False,
+        attribution=dict(
+            id="irregular_sea_keeps_2a_stable",
+            grid_points_per_axis=9,
+            reproduced_at_attribution_grid=False,
+            estimates={"EA": {"low": run, "high": keep}},
+            panel_estimates={
+                "base_at_variant_mesh": False,
+                "cog_z": {"low": keep, "high": "not run"},
+            },
+            gradient=dict(
+                point={"l0": 2.5, "tp": 7.0},
+                max_real=0.05,
+                wanted="stable",
+                parameters={"EA": dict(relative_change_to_flip=-0.4)},
+            ),
+            flipped_by=["EA low"],
+        ),
+    )
+    text = attribution_text([claim, dict(id="other", claim="no attribution")])
+    assert "### irregular_sea_keeps_2a_stable" in text and "other" not in text
+    assert (
+        "| EA | x 0.8: reproduced (fraction_stable 1) | x 1.2: not reproduced (fraction_stable 0.62) |"
+        in text
+    )
+    assert (
+        "| cog_z (panel variant) | x 1.2: not reproduced (fraction_stable 0.62) | not run |" in text
+    )
+    assert "Base database at the panel variants' mesh: not reproduced." in text
+    assert "EA -40 %" in text and "make it stable" in text
+    assert "Flipped by: EA low." in text
+
+
 def test_claims_table_has_a_column_per_source_and_form():
     from jaxtow.cli.report import claims_table
 
