@@ -325,11 +325,17 @@ def test_attribution_text_lists_every_estimate_and_what_flips_the_claim():
         in text
     )
     assert (
-        "| cog_z (panel variant) | x 1.2: not reproduced (fraction_stable 0.62) | not run |" in text
+        "| cog_z (panel variant) | x 1.2: not reproduced (fraction_stable 0.62; x 1/2) | not run |"
+        in text
     )
     assert "Base database at the panel variants' mesh: not reproduced." in text
     assert "EA -40 %" in text and "make it stable" in text
     assert "Flipped by: EA low." in text
+    from jaxtow.cli.report import _brief
+
+    assert (
+        _brief({"shares": {"0": [25.9, 74.1, 0.0]}, "ok": True}) == "shares.0 25.9/74.1/0; ok yes"
+    )
 
 
 def test_claims_table_has_a_column_per_source_and_form():

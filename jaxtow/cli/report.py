@@ -252,6 +252,12 @@ def _brief(measured, limit: int = 4) -> str:
             items.append(f"{prefix} {'yes' if v else 'no'}")
         elif isinstance(v, (int, float)):
             items.append(f"{prefix} {float(v):.3g}")
+        elif (
+            isinstance(v, (list, tuple))
+            and v
+            and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in v)
+        ):
+            items.append(f"{prefix} " + "/".join(f"{float(x):.3g}" for x in v))
 
     walk("", measured)
     return "; ".join(items[:limit]) + (" …" if len(items) > limit else "")
