@@ -321,7 +321,7 @@ def test_attribution_text_lists_every_estimate_and_what_flips_the_claim():
     text = attribution_text([claim, dict(id="other", claim="no attribution")])
     assert "### irregular_sea_keeps_2a_stable" in text and "other" not in text
     assert (
-        "| EA | x 0.8: reproduced (fraction_stable 1) | x 1.2: not reproduced (fraction_stable 0.62) |"
+        "| EA | x 0.8: reproduced (fraction_stable 1) | x 1.2: not reproduced (fraction_stable 0.62; x 1/2) |"
         in text
     )
     assert (
