@@ -464,3 +464,31 @@ def test_attribution_reruns_the_claim_and_gives_the_gradient_at_its_critical_poi
             assert g["max_real"] + row["gradient"] * row["change_to_flip"] == pytest.approx(target)
     with pytest.raises(ValueError, match="parameter 'estimates'"):
         reports.attribute(s, "barge_2b_stays_stable", n=3, estimates=("KG",))
+
+
+def test_committed_full_report_covers_every_source_form_and_attribution():
+    """The committed real-grid report (benchmarks/data/report_waves) holds every claim under
+    the three sources and both forms, an attribution of every claim of the primary study
+    that does not reproduce, and the docs show its table as it is (no stale docs)."""
+    from jaxtow.cli.report import attribution_text, claims_table
+    from jaxtow.reports import CLAIM_IDS, RESISTANCE_CLAIM_IDS
+
+    data = DOCS.parent / "benchmarks" / "data" / "report_waves"
+    claims = json.loads((data / "claims.json").read_text())
+    combos = {(c["source_key"], c["sailing_form"]) for c in claims}
+    assert combos == {
+        (s, f) for s in ("near_field", "far_field", "standin") for f in ("aranha", "thesis")
+    }
+    assert len(claims) == 6 * len(CLAIM_IDS + RESISTANCE_CLAIM_IDS)
+    primary = [
+        c for c in claims if (c["source_key"], c["sailing_form"]) == ("near_field", "aranha")
+    ]
+    for c in primary:
+        assert ("attribution" in c) == (not c["reproduced"]), c["id"]
+        if not c["reproduced"]:
+            a = c["attribution"]
+            assert set(a["estimates"]) == {"draft", "a11", "a22", "a66", "EA"}
+            assert {"cog_z", "radii_of_gyration", "roll_damping"} <= set(a["panel_estimates"])
+    page = (DOCS / "data" / "report_waves.md").read_text()
+    assert claims_table(claims) in page
+    assert attribution_text(claims).replace("### ", "##### ") in page
