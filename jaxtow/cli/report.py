@@ -538,8 +538,8 @@ def add_parser(sub):
         "--n",
         type=int,
         default=41,
-        help="points per map axis (41: the six source/form studies take about an hour on 2 cores, "
-        "most of it compiling; --sources/--forms to run fewer)",
+        help="points per map axis (41: the six source/form studies took 88 min on 2 loaded "
+        "cores and the whole report about 2 h; --sources/--forms to run fewer)",
     )
     r.add_argument(
         "--n-grid",
