@@ -470,7 +470,7 @@ def test_committed_full_report_covers_every_source_form_and_attribution():
     """The committed real-grid report (benchmarks/data/report_waves) holds every claim under
     the three sources and both forms, an attribution of every claim of the primary study
     that does not reproduce, and the docs show its table as it is (no stale docs)."""
-    from jaxtow.cli.report import attribution_text, claims_table
+    from jaxtow.cli.report import attribution_text, claims_markdown, claims_table
     from jaxtow.reports import CLAIM_IDS, RESISTANCE_CLAIM_IDS
 
     data = DOCS.parent / "benchmarks" / "data" / "report_waves"
@@ -489,6 +489,8 @@ def test_committed_full_report_covers_every_source_form_and_attribution():
             a = c["attribution"]
             assert set(a["estimates"]) == {"draft", "a11", "a22", "a66", "EA"}
             assert {"cog_z", "radii_of_gyration", "roll_damping"} <= set(a["panel_estimates"])
+    summary = json.loads((data / "summary.json").read_text())
+    assert (data / "claims.md").read_text() == claims_markdown(claims, summary["sources"])
     page = (DOCS / "data" / "report_waves.md").read_text()
     assert claims_table(claims) in page
     assert attribution_text(claims).replace("### ", "##### ") in page

@@ -325,6 +325,25 @@ def attribution_text(claims: list) -> str:
     return "\n".join(out)
 
 
+def claims_markdown(claims: list, sources: dict) -> str:
+    """``claims.md``: the claims table, the drift sources ({key: description}) and, where
+    claims carry one, the readable attribution."""
+    attributed = any(c.get("attribution") for c in claims)
+    return (
+        "# Thesis claims by drift source and sailing-drift form\n\n"
+        + claims_table(claims)
+        + "\nDrift sources:\n\n"
+        + "".join(f"* {SOURCE_NAMES.get(k, k)}: {v}\n" for k, v in sources.items())
+        + (
+            "\n## Attribution of the claims that do not reproduce (primary source and form)\n\n"
+            + attribution_text(claims)
+            + "\nThe numbers behind each row are in claims.json, key 'attribution'.\n"
+            if attributed
+            else ""
+        )
+    )
+
+
 def file_options(pairs) -> dict:
     """``--qtf-option KEY=VALUE`` pairs as reader options (numbers, ``x,y`` pairs, words)."""
     from ..drift._database import FILE_OPTIONS
@@ -416,7 +435,6 @@ def cmd_report(args):
             write_file(out / "claims.partial.json", json.dumps(claims, indent=2, default=float))
     # attribution of every claim of the primary study that does not reproduce
     variants = _panel_variants(args.panel_variants) if args.panel_variants else None
-    attributions = {}
     if args.attribution:
         for c in claims:
             if (c["source_key"], c["sailing_form"]) == (_key(primary), args.form) and not c[
@@ -424,7 +442,6 @@ def cmd_report(args):
             ]:
                 a = W.attribute(base, c["id"], n=args.attribution_n, panel_variants=variants)
                 c["attribution"] = a
-                attributions[c["id"]] = a
                 print(
                     f"attributed: {c['id']}: flipped by {a['flipped_by'] or 'none of the estimates'}",
                     flush=True,
@@ -449,20 +466,7 @@ def cmd_report(args):
     (out / "claims.partial.json").unlink(missing_ok=True)
     write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     table = claims_table(claims)
-    write_file(
-        out / "claims.md",
-        "# Thesis claims by drift source and sailing-drift form\n\n"
-        + table
-        + "\nDrift sources:\n\n"
-        + "".join(f"* {SOURCE_NAMES.get(k, k)}: {v}\n" for k, v in summary["sources"].items())
-        + (
-            "\n## Attribution of the claims that do not reproduce (primary source and form)\n\n"
-            + attribution_text(claims)
-            + "\nThe numbers behind each row are in claims.json, key 'attribution'.\n"
-            if attributions
-            else ""
-        ),
-    )
+    write_file(out / "claims.md", claims_markdown(claims, summary["sources"]))
     print(table)
     print(f"primary drift forces: {base.source} ({args.form})")
     print(f"wrote figures, NetCDF datasets, claims.json, claims.md and summary.json to {out}")
