@@ -10,7 +10,11 @@ compiling the wave-map kernel cost.
 2. The sweep kernel of the wave study (Barge 2a, regular head waves, the shipped near-field
    database, 401 scan headings, as `jaxtow.reports.WaveStudy` runs it), in a fresh process
    into an empty cache and again from the cache: the time to trace it (Python, every run),
-   to lower it and to compile it (XLA; read back from the cache the second time).
+   to lower it and to compile it (XLA; read back from the cache the second time), its
+   traced operations and the kernels of the compiled program (the functions XLA generates
+   code for: each costs tens of milliseconds to compile on CPU, so their number sets the
+   compile time). The same for the kernel on the same model without the wave force (calm
+   water): the floor the wave force adds to.
 
     python benchmarks/bench_compile.py [--json out.json] [--skip-commands] [--commands calm]
 """
@@ -50,24 +54,50 @@ COMMANDS = {
     ],
 }
 
-KERNEL = """
-import json, sys, time
+KERNEL = r"""
+import json, re, sys, time
 import jax, jax.numpy as jnp
 jax.config.update("jax_enable_x64", True)
+import equinox as eqx
 from jaxtow import enable_compile_cache
 enable_compile_cache(sys.argv[1])
+from jaxtow.forces import NoExternalForce
 from jaxtow.reports import WaveStudy
 from jaxtow._sweep import make_batched_kernel
 st = WaveStudy(n=5, n_grid=401, compile_cache=False)
 model = st.wave_model("2a")
+if sys.argv[2] == "calm":  # the same kernel on the same model without the wave force
+    model = eqx.tree_at(lambda m: m.external, model, NoExternalForce())
 kernel = make_batched_kernel(method="numerical", n_grid=401, max_roots=4, psi_range=3.141592653589793 / 2,
                              routh_hurwitz=True, eig_method="lapack").jitted
 params = {"l0": jnp.linspace(0.5, 2.5, 64), "external.omega": jnp.linspace(0.4, 2.0, 64)}
+if sys.argv[2] == "calm":
+    params.pop("external.omega")
 t0 = time.perf_counter(); traced = kernel.trace(model, params)
 t1 = time.perf_counter(); lowered = traced.lower()
 t2 = time.perf_counter(); compiled = lowered.compile()
 t3 = time.perf_counter(); jax.block_until_ready(compiled(model, params)); t4 = time.perf_counter()
-print(json.dumps(dict(trace_s=t1 - t0, lower_s=t2 - t1, compile_s=t3 - t2, run_64_points_s=t4 - t3)))
+def count(j):  # traced operations, inside sub-programs (loops, calls) too
+    from jax.extend.core import ClosedJaxpr, Jaxpr
+    n = 0
+    for e in j.eqns:
+        n += 1
+        for p in e.params.values():
+            for q in p if isinstance(p, (list, tuple)) else [p]:
+                n += count(q.jaxpr if isinstance(q, ClosedJaxpr) else q) if isinstance(q, (ClosedJaxpr, Jaxpr)) else 0
+    return n
+# the compiled program's kernels: the operations of its non-fused computations (each fusion,
+# dot or copy is one function XLA generates code for), constants and tuples aside
+kernels = 0
+for comp in re.split(r"\n(?=\S)", compiled.as_text()):
+    if re.match(r"(ENTRY )?%?(fused_|wrapped_|region_|horizontally|parallel_)", comp):
+        continue
+    for line in comp.split("\n")[1:]:
+        m = re.search(r"= \S+ ([a-z-]+)\(", line)
+        if m and m.group(1) not in ("parameter", "constant", "get-tuple-element", "tuple", "bitcast"):
+            kernels += 1
+print(json.dumps(dict(trace_s=t1 - t0, lower_s=t2 - t1, compile_s=t3 - t2, run_64_points_s=t4 - t3,
+                      traced_operations=count(traced.jaxpr.jaxpr), kernels=kernels)))
 """
 
 
@@ -89,7 +119,7 @@ def main(argv=None):
         "--commands", default=",".join(COMMANDS), help=f"comma-separated, of {list(COMMANDS)}"
     )
     args = ap.parse_args(argv)
-    res: dict = {"commands": {}, "wave_kernel": {}}
+    res: dict = {"commands": {}, "wave_kernel": {}, "calm_kernel": {}}
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         if not args.skip_commands:
@@ -107,20 +137,27 @@ def main(argv=None):
                     f"jaxtow {name}: first run {times[0]:.1f} s, second {times[1]:.1f} s "
                     f"({times[0] / times[1]:.2f}x; target >= 2x), {entries} cached programs"
                 )
-        cache = tmp / "xla_kernel"
-        for label in ("cold", "from cache"):
-            out = subprocess.run(
-                [sys.executable, "-c", KERNEL, str(cache)],
-                check=True,
-                capture_output=True,
-                text=True,
-            )
-            r = json.loads(out.stdout.strip().splitlines()[-1])
-            res["wave_kernel"][label] = r
-            print(
-                f"wave-map kernel, {label}: trace {r['trace_s']:.1f} s, lower {r['lower_s']:.1f} s, "
-                f"compile {r['compile_s']:.1f} s; 64 points {r['run_64_points_s']:.2f} s"
-            )
+        for model in ("waves", "calm"):
+            cache = tmp / f"xla_kernel_{model}"
+            for label in ("cold", "from cache"):
+                out = subprocess.run(
+                    [sys.executable, "-c", KERNEL, str(cache), model],
+                    check=True,
+                    capture_output=True,
+                    text=True,
+                )
+                r = json.loads(out.stdout.strip().splitlines()[-1])
+                res["wave_kernel" if model == "waves" else "calm_kernel"][label] = r
+                print(
+                    f"sweep kernel ({model}), {label}: trace {r['trace_s']:.1f} s, "
+                    f"lower {r['lower_s']:.1f} s, compile {r['compile_s']:.1f} s "
+                    f"({r['kernels']} kernels); 64 points {r['run_64_points_s']:.2f} s"
+                )
+        w, c = res["wave_kernel"]["cold"], res["calm_kernel"]["cold"]
+        print(
+            f"compile time per kernel: waves {w['compile_s'] / w['kernels'] * 1e3:.0f} ms, "
+            f"calm {c['compile_s'] / c['kernels'] * 1e3:.0f} ms"
+        )
     if args.json:
         Path(args.json).write_text(json.dumps(res, indent=2))
     return res

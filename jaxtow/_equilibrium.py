@@ -107,9 +107,15 @@ def equilibrium_kinematics(psi):
     return jnp.stack([jnp.cos(psi), -jnp.sin(psi), 0 * psi, one, 0 * psi, psi])
 
 
+def _steady(model: TowModel) -> TowModel:
+    """The model with its external force's `steady` form, for states with r = 0."""
+    return eqx.tree_at(lambda m: m.external, model, model.external.steady())
+
+
 def hull_forces_at_heading(psi, model: TowModel):
-    """Non-towline forces (X', Y', N') on the vessel moving with the tug at heading ψ."""
-    fb = force_breakdown(0.0, equilibrium_kinematics(psi), model)
+    """Non-towline forces (X', Y', N') on the vessel moving with the tug at heading ψ (r = 0:
+    the external force's `steady` form)."""
+    fb = force_breakdown(0.0, equilibrium_kinematics(psi), _steady(model))
     return fb.manoeuvring + fb.coupling + fb.external
 
 
@@ -139,7 +145,8 @@ def _state_from_heading(psi, model: TowModel):
 
 def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
     state, gamma, T, length = jax.vmap(_state_from_heading, in_axes=(0, None))(psi, model)
-    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, model))))(state)
+    steady = _steady(model)  # the states have r = 0
+    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady))))(state)
     branch = jnp.where(jnp.abs(psi) <= STRAIGHT_TOL, 0, jnp.sign(psi)).astype(jnp.int32)
     return Equilibria(
         state=state,
@@ -279,7 +286,8 @@ def analytic_equilibria(model: TowModel, *, check: bool = True) -> Equilibria:
     T = num / jnp.cos(gamma + psi)  # eq. 6.12
     length = (T / EA + 1.0) * l0  # eq. 6.13
     state = jnp.stack([u, v, 0 * u, length, gamma, psi], axis=-1)
-    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, model))))(state)
+    steady = _steady(model)  # the states have r = 0
+    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady))))(state)
     found = jnp.stack([side, jnp.asarray(True), side])
     branch = jnp.array([-1, 0, 1], dtype=jnp.int32)
     eqs = Equilibria(

@@ -261,21 +261,91 @@ def test_irregular_sailing_drift_and_force(barge_2a):
     assert np.all(e.residual < 1e-12)
 
 
+def _np_slopes(x, y, ends):
+    """Node slopes of the whole table along the last axis (plain NumPy reference)."""
+    h = np.diff(x)
+    h0, h1 = h[:-1], h[1:]
+    mid = (h0**2 * y[..., 2:] - h1**2 * y[..., :-2] + (h1**2 - h0**2) * y[..., 1:-1]) / (
+        h0 * h1 * (h0 + h1)
+    )
+    if ends == "periodic":
+        a, b = h[-1], h[0]
+        first = last = (a**2 * y[..., 1] - b**2 * y[..., -2] + (b**2 - a**2) * y[..., 0]) / (
+            a * b * (a + b)
+        )
+    elif ends == "flat":
+        first = last = np.zeros_like(y[..., 0])
+    else:
+        first, last = (y[..., 1] - y[..., 0]) / h[0], (y[..., -1] - y[..., -2]) / h[-1]
+    return np.concatenate([first[..., None], mid, last[..., None]], axis=-1)
+
+
+def _np_hermite(x, y, xq, ends):
+    """Textbook cubic Hermite on the interval of ``xq`` from the full slope table."""
+    m = _np_slopes(x, y, ends)
+    xq = np.clip(xq, x[0], x[-1])
+    i = np.clip(np.searchsorted(x, xq, side="right") - 1, 0, x.size - 2)
+    h = x[i + 1] - x[i]
+    t = (xq - x[i]) / h
+    return (
+        (2 * t**3 - 3 * t**2 + 1) * y[..., i]
+        + (t**3 - 2 * t**2 + t) * h * m[..., i]
+        + (-2 * t**3 + 3 * t**2) * y[..., i + 1]
+        + (t**3 - t**2) * h * m[..., i + 1]
+    )
+
+
+def test_hermite_weights_equal_the_full_slope_interpolant():
+    """The four-row weight polynomials of `hermite` (tables built in the traced program) and
+    of `HermiteAxis` (built with NumPy) give the textbook interpolant built from the whole
+    table of slopes, for every end rule, at random points including the end intervals and
+    beyond the ends."""
+    from jaxtow._interp import ENDS, HermiteAxis, hermite
+
+    rng = np.random.default_rng(5)
+    x = np.sort(rng.uniform(-2.0, 3.0, 9))
+    y = rng.normal(size=(2, x.size))
+    y[:, -1] = y[:, 0]  # a periodic table repeats its first value
+    xq = np.concatenate([rng.uniform(-3.0, 4.0, 200), x])
+    for ends in ENDS:
+        got = np.asarray(jax.vmap(lambda q: hermite(jnp.asarray(x), jnp.asarray(y), q, ends))(xq))
+        want = np.stack([_np_hermite(x, y, q, ends) for q in xq])
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-13, err_msg=ends)
+        axis = HermiteAxis(x, ends)
+        got = np.asarray(jax.jit(jax.vmap(lambda q: axis(jnp.asarray(y), q)))(xq))
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-13, err_msg=ends)
+    with pytest.raises(ValueError, match="'ends'"):
+        hermite(jnp.asarray(x), jnp.asarray(y), 0.0, "natural")
+
+
+def test_hermite_is_exact_for_quadratics_and_c1_across_the_periodic_seam():
+    from jaxtow._interp import hermite
+
+    x = jnp.asarray(np.sort(np.random.default_rng(1).uniform(0.0, 5.0, 12)))
+    quad = 0.3 * x**2 - 1.2 * x + 0.7
+    xq = jnp.linspace(x[1], x[-2], 50)  # interior intervals: three-point slopes are exact
+    got = jax.vmap(lambda q: hermite(x, quad, q))(xq)
+    np.testing.assert_allclose(got, 0.3 * xq**2 - 1.2 * xq + 0.7, rtol=0, atol=1e-12)
+    a = jnp.linspace(-jnp.pi, jnp.pi, 13)
+    y = jnp.cos(a) + 0.5 * jnp.sin(2 * a)
+    f = lambda q: hermite(a, y, q, "periodic")  # noqa: E731
+    eps = 1e-7
+    np.testing.assert_allclose(f(-jnp.pi + eps), f(jnp.pi - eps), atol=1e-6)
+    np.testing.assert_allclose(jax.grad(f)(-jnp.pi + eps), jax.grad(f)(jnp.pi - eps), atol=1e-5)
+
+
 def test_local_interpolant_equals_full_slope_tables():
     """QTF.__call__ touches only the entries it needs; it must equal the tensor-product
-    Hermite interpolant built from the full slope tables (module docstring)."""
-    from jaxtow._interp import hermite as _hermite, three_point_slopes as _three_point_slopes
+    Hermite interpolant built from the full slope tables (module docstring), here in plain
+    NumPy."""
 
     def full(q, omega, beta):
-        w = jnp.concatenate([jnp.zeros(1), q.omega])
-        v = jnp.moveaxis(
-            jnp.concatenate([jnp.zeros_like(q.values[:, :1]), q.values], axis=1), 1, -1
-        )
-        m = _three_point_slopes(w, v).at[..., 0].set(0.0).at[..., -1].set(0.0)
-        a = _hermite(w, v, m, jnp.maximum(omega, 0.0))
+        w = np.concatenate([[0.0], np.asarray(q.omega)])
+        v = np.moveaxis(np.concatenate([np.zeros_like(q.values[:, :1]), q.values], axis=1), 1, -1)
+        a = _np_hermite(w, v, max(omega, 0.0), "flat")  # (3, nβ)
         if q.periodic:
-            beta = jnp.mod(beta + jnp.pi, 2 * jnp.pi) - jnp.pi
-        return _hermite(q.beta, a, _three_point_slopes(q.beta, a, periodic=q.periodic), beta)
+            beta = np.mod(beta + np.pi, 2 * np.pi) - np.pi
+        return _np_hermite(np.asarray(q.beta), a, beta, "periodic" if q.periodic else "one_sided")
 
     rng = np.random.default_rng(3)
     w = np.sort(rng.uniform(0.1, 2.5, 20))
@@ -289,7 +359,7 @@ def test_local_interpolant_equals_full_slope_tables():
     ):
         np.testing.assert_allclose(
             np.asarray(jax.vmap(q)(W, Bq)),
-            np.asarray(jax.vmap(lambda x, y: full(q, x, y))(W, Bq)),
+            np.stack([full(q, x, y) for x, y in zip(W, Bq)]),
             rtol=0,
             atol=1e-13,
         )

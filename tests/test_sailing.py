@@ -217,6 +217,40 @@ def test_yaw_rate_column_enters_the_drift_linearly_and_can_be_switched_off():
     assert np.all(np.asarray(yaw_rate_damping(no_table, w, b)) == 0.0)
 
 
+def test_steady_form_equals_the_force_along_steady_states_and_drops_only_the_yaw_rate_term():
+    """The equilibria evaluate the wave force in its `steady` form (no yaw-rate column): at
+    r = 0 it equals the full force, and so does its derivative along the heading (what the
+    Newton polish uses); at r != 0 they differ by exactly the yaw-rate term."""
+    from jaxtow._dynamics import force_breakdown
+    from jaxtow._equilibrium import equilibrium_kinematics, hull_forces_at_heading
+
+    q = hull_tables(breadth=8.0)
+    m = jt.study.barge2_wave_model("2a", qtf=q)
+    ext = m.external
+    assert ext.yaw_rate and not ext.steady().yaw_rate
+    comb = jt.forces.CombinedForce((ext, ext))
+    assert not any(f.yaw_rate for f in comb.steady().forces)
+
+    def full(psi):  # the hull forces with the force as it is, no steady form
+        fb = force_breakdown(0.0, equilibrium_kinematics(psi), m)
+        return fb.manoeuvring + fb.coupling + fb.external
+
+    for psi in (-0.4, 0.1, 0.7):
+        np.testing.assert_array_equal(
+            np.asarray(hull_forces_at_heading(psi, m)), np.asarray(full(psi))
+        )
+        d_steady = jax.jvp(lambda p: hull_forces_at_heading(p, m), (psi,), (1.0,))[1]
+        d_full = jax.jvp(full, (psi,), (1.0,))[1]
+        np.testing.assert_allclose(np.asarray(d_steady), np.asarray(d_full), rtol=1e-14, atol=0)
+    y = jnp.array([0.9, -0.1, 0.05, 2.6, 0.0, 0.1])
+    gap = np.asarray(ext(0.0, y, m) - ext.steady()(0.0, y, m))
+    U, L = ext.scales.u_tug, ext.scales.length
+    r = 0.05 * U / L
+    want = ext.scales.nondimensional(ext.zeta_a**2 * r * yaw_rate_damping(q, ext.omega, -0.1))
+    assert np.all(gap != 0.0)
+    np.testing.assert_allclose(gap, np.asarray(want), rtol=1e-9)
+
+
 # --- tug speed as a model parameter ---------------------------------------------------------
 
 

@@ -28,7 +28,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
-from .._interp import cell_index, hermite_cell, hermite_local, node_slope
+from .._interp import HermiteAxis
 
 _COMPONENTS = ("fx", "fy", "nz")
 
@@ -67,12 +67,17 @@ class QTF(eqx.Module):
     (3, nω, nβ) (thesis eqs 2.43-2.48: M_x,j = ∫ x^j f_x dx, M_y,j = ∫ x^j f_y dx, x from the
     CoG). They give the yaw-rate column of the wave-drift damping
     (`jaxtow.drift.yaw_rate_damping`); ``q.moments(omega, beta)`` interpolates them.
+
+    The interpolation tables of the two grids (``omega_axis``, ``beta_axis``) are built with
+    the table: the grids are fixed at construction; build a new table for other grids.
     """
 
     omega: Float[Array, " nw"]
     beta: Float[Array, " nb"]
     values: Float[Array, "3 nw nb"]
     periodic: bool = eqx.field(static=True)
+    omega_axis: HermiteAxis  # the interpolation tables of the grids, built with the table
+    beta_axis: HermiteAxis
     sectional: Float[Array, "3 nw nb"] | None = None
 
     def __init__(self, *, omega, beta, fx, fy, nz, sectional=None):
@@ -119,6 +124,9 @@ class QTF(eqx.Module):
             jnp.asarray(vals),
             full,
         )
+        # in ω a virtual node at ω = 0 (value 0) and zero slope at both end nodes
+        self.omega_axis = HermiteAxis(np.concatenate([[0.0], w]), "flat")
+        self.beta_axis = HermiteAxis(b, "periodic" if full else "one_sided")
 
     @property
     def has_sectional(self) -> bool:
@@ -227,9 +235,9 @@ class QTF(eqx.Module):
     def __call__(self, omega, beta) -> Float[Array, "3"]:
         """(Fx, Fy, Nz) per ζa² at one (ω, β); vmap for grids.
 
-        Only the table entries the point needs are touched: the four β columns around β
-        (for the two β-node slopes), each interpolated in ω on its bracketing interval
-        (`jaxtow._interp.hermite_local`). The result equals the tensor-product interpolant of the
+        Only the 4 × 4 table entries the point needs are touched: the interpolant is linear
+        in the table, so it is the ω weights and the β weights
+        contracted with that block (`jaxtow._interp.HermiteAxis`). The result equals the tensor-product interpolant of the
         module docstring built from the full slope tables."""
         return self._interpolate(self.values, omega, beta)
 
@@ -241,49 +249,14 @@ class QTF(eqx.Module):
         return self._interpolate(self.sectional, omega, beta)
 
     def _interpolate(self, values, omega, beta):
-        b, n = self.beta, self.beta.shape[0]
-        w = jnp.concatenate([jnp.zeros(1, self.omega.dtype), self.omega])
         beta = jnp.asarray(beta)
         if self.periodic:
             beta = jnp.mod(beta + jnp.pi, 2 * jnp.pi) - jnp.pi
-        beta = jnp.clip(beta, b[0], b[-1])
-        j = cell_index(b, beta)
-
-        def neighbours(k):
-            if self.periodic:  # the end nodes (−π and π) are one point
-                end = (k == 0) | (k == n - 1)
-                return jnp.where(end, n - 2, k - 1), jnp.where(end, 1, k + 1)
-            return jnp.maximum(k - 1, 0), jnp.minimum(k + 1, n - 1)
-
-        jm, _ = neighbours(j)
-        _, jpp = neighbours(j + 1)
-        cols = jnp.stack([jm, j, j + 1, jpp])
-        sub = values[:, :, cols]  # (3, nw, 4): the four beta columns
-
-        def take(rows):  # table rows at node indices of w (node 0 is the virtual ω = 0 row)
-            r = sub[:, jnp.maximum(rows - 1, 0), :]  # (3, 4 rows, 4 cols)
-            return jnp.moveaxis(
-                jnp.where((rows > 0)[None, :, None], r, 0.0), 1, -1
-            )  # (3, 4 cols, 4 rows)
-
-        y4 = hermite_local(w, take, jnp.maximum(omega, 0.0))  # (3, 4)
-
-        def slope(k, ym, yk, yp):
-            km, kp = neighbours(k)
-            if self.periodic:
-                end = (k == 0) | (k == n - 1)
-                h0 = jnp.where(end, b[-1] - b[-2], b[k] - b[km])
-                h1 = jnp.where(end, b[1] - b[0], b[kp] - b[k])
-                return node_slope(h0, h1, ym, yk, yp)
-            h0 = jnp.where(k == 0, 1.0, b[k] - b[km])
-            h1 = jnp.where(k == n - 1, 1.0, b[kp] - b[k])
-            mid = node_slope(h0, h1, ym, yk, yp)
-            return jnp.where(k == 0, (yp - yk) / h1, jnp.where(k == n - 1, (yk - ym) / h0, mid))
-
-        m0 = slope(j, y4[:, 0], y4[:, 1], y4[:, 2])
-        m1 = slope(j + 1, y4[:, 1], y4[:, 2], y4[:, 3])
-        h = b[j + 1] - b[j]
-        return hermite_cell(y4[:, 1], y4[:, 2], m0, m1, h, (beta - b[j]) / h)
+        cols, wb = self.beta_axis.weights(beta)
+        rows, ww = self.omega_axis.weights(jnp.maximum(omega, 0.0))
+        ww = jnp.where(rows > 0, ww, 0.0)  # the virtual row's value is 0
+        block = values[:, jnp.maximum(rows - 1, 0)[:, None], cols[None, :]]  # (3, 4, 4)
+        return jnp.sum(block * (ww[:, None] * wb[None, :]), axis=(1, 2))
 
 
 class FullQTF(eqx.Module):

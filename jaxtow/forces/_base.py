@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import abc
+import dataclasses
 
 import jax.numpy as jnp
 from jaxtyping import Array, Float
@@ -27,6 +28,14 @@ class AbstractExternalForce(V.Checked):
         """The physics' own validity limits of this force at state y, as named boolean
         flags (True = valid) and the numbers behind them; none by default."""
         return {}
+
+    def steady(self) -> AbstractExternalForce:
+        """This force for the states of a steady tow, yaw rate r = 0 (the equilibria): it
+        may leave out the terms proportional to r, whose value there is zero, so that the
+        equilibrium scans do not trace and compile them. Its value and its derivatives
+        along steady states equal this force's; not for Jacobians or time-domain runs.
+        By default the force itself."""
+        return self
 
 
 class NoExternalForce(AbstractExternalForce):
@@ -56,6 +65,9 @@ class CombinedForce(AbstractExternalForce):
     ``external.forces.0.omega`` (see `jaxtow.with_parameters`)."""
 
     forces: tuple
+
+    def steady(self) -> CombinedForce:
+        return dataclasses.replace(self, forces=tuple(f.steady() for f in self.forces))
 
     def __call__(self, t, y, model):
         out = jnp.zeros(3, dtype=jnp.result_type(y))

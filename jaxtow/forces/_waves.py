@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import equinox as eqx
 import jax.numpy as jnp
 from jaxtyping import Array, Float
@@ -24,6 +26,12 @@ def _hull_validity(scales: Scales, y) -> tuple:
     return U, dict(froude=fn, froude_ok=fn < FROUDE_MAX)
 
 
+def _steady(self):
+    """`AbstractExternalForce.steady` of the wave-drift forces: the yaw-rate damping column
+    multiplies r, zero in a steady tow."""
+    return dataclasses.replace(self, yaw_rate=False)
+
+
 class WaveDriftForce(AbstractExternalForce):
     """Mean drift in regular head waves (ω, ζa) on the towed vessel, for `TowModel.external`.
 
@@ -42,6 +50,7 @@ class WaveDriftForce(AbstractExternalForce):
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")
     yaw_rate: bool = eqx.field(static=True, default=True)
+    steady = _steady
 
     def __check_init__(self):
         check_form(self.form)
@@ -87,6 +96,7 @@ class IrregularWaveDriftForce(AbstractExternalForce):
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")
     yaw_rate: bool = eqx.field(static=True, default=True)
+    steady = _steady
 
     def __check_init__(self):
         check_form(self.form)
@@ -180,6 +190,7 @@ class SlowDriftForce(AbstractExternalForce):
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")
     yaw_rate: bool = eqx.field(static=True, default=True)
+    steady = _steady
     offdiagonal: Array | None = None  # (nβ, 3, n, n) complex D_ij of the full QTF
     offdiagonal_beta: Array | None = None  # (nβ,) its headings [rad]
     full_qtf_energy: Array | None = None  # share of Σ a_i² inside the full QTF's range

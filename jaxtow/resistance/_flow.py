@@ -10,7 +10,7 @@ import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
 from .. import _rules as V
-from .._interp import hermite, three_point_slopes
+from .._interp import hermite
 from .._vessel import Vessel
 
 RHO_AIR = 1.225  # kg/m³, ISO standard atmosphere at sea level
@@ -107,8 +107,7 @@ class CoefficientTable(eqx.Module):
         )
 
     def __call__(self, alpha):
-        m = three_point_slopes(self.angle, self.values, periodic=True)
-        return hermite(self.angle, self.values, m, _wrap(alpha))
+        return hermite(self.angle, self.values, _wrap(alpha), "periodic")
 
 
 class ManoeuvringCoefficients(V.Checked):

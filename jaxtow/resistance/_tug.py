@@ -6,7 +6,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from .. import _rules as V
-from .._interp import hermite, three_point_slopes
+from .._interp import hermite
 
 
 def _float(x):
@@ -69,8 +69,7 @@ class Tug(V.Checked):
         """P(U)/BP."""
         if self.pulls is None:
             return 1.0 - (speed / self.free_speed) ** 2
-        m = three_point_slopes(self.speeds, self.pulls)
-        return hermite(self.speeds, self.pulls, m, speed) / self.bollard_pull
+        return hermite(self.speeds, self.pulls, speed) / self.bollard_pull
 
     def pull(self, speed):
         """Available pull η P(U) [N]."""
