@@ -235,13 +235,14 @@ def test_steady_form_equals_the_force_along_steady_states_and_drops_only_the_yaw
         fb = force_breakdown(0.0, equilibrium_kinematics(psi), m)
         return fb.manoeuvring + fb.coupling + fb.external
 
-    for psi in (-0.4, 0.1, 0.7):
-        np.testing.assert_array_equal(
-            np.asarray(hull_forces_at_heading(psi, m)), np.asarray(full(psi))
-        )
-        d_steady = jax.jvp(lambda p: hull_forces_at_heading(p, m), (psi,), (1.0,))[1]
-        d_full = jax.jvp(full, (psi,), (1.0,))[1]
-        np.testing.assert_allclose(np.asarray(d_steady), np.asarray(d_full), rtol=1e-14, atol=0)
+    psi = jnp.array([-0.4, 0.1, 0.7])
+    steady = jax.jit(
+        jax.vmap(lambda p: jax.jvp(lambda q: hull_forces_at_heading(q, m), (p,), (1.0,)))
+    )
+    whole = jax.jit(jax.vmap(lambda p: jax.jvp(full, (p,), (1.0,))))
+    (f_steady, d_steady), (f_full, d_full) = steady(psi), whole(psi)
+    np.testing.assert_array_equal(np.asarray(f_steady), np.asarray(f_full))
+    np.testing.assert_allclose(np.asarray(d_steady), np.asarray(d_full), rtol=1e-14, atol=0)
     y = jnp.array([0.9, -0.1, 0.05, 2.6, 0.0, 0.1])
     gap = np.asarray(ext(0.0, y, m) - ext.steady()(0.0, y, m))
     U, L = ext.scales.u_tug, ext.scales.length
