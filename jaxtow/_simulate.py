@@ -25,6 +25,7 @@ from ._dynamics import TowModel, all_valid, validity, vector_field
 from ._parameters import check_values, with_parameters
 from ._rules import check_now
 from ._stability import eigenvalues
+from ._sweep import without_metadata
 
 SOLVERS = ("tsit5", "kvaerno5")
 #: |λ|max · (t1 − t0) above which ``solver="auto"`` chooses the implicit solver.
@@ -155,7 +156,9 @@ def simulate(
     check_now(model)
     if solver == "auto":
         solver = choose_solver(model, y0, t1, t0)
-    return _run_jit(model, y0, ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps)
+    return _run_jit(  # models differing only in metadata share the program (Barge 2a and 2b)
+        without_metadata(model), y0, ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps
+    )
 
 
 def simulate_batch(
@@ -192,7 +195,7 @@ def simulate_batch(
     ts = _save_grid(t0, t1, n_save)
     check_now(model)
     return _batch_jit(
-        model,
+        without_metadata(model),
         y0s,
         params,
         ts,

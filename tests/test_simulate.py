@@ -34,6 +34,22 @@ def test_thesis_initial_condition_2b_converges_2a_fishtails(barge_2a, barge_2b):
     assert met["slewing_period"] > 0
 
 
+def test_models_differing_only_in_metadata_share_the_compiled_run(barge_2a, barge_2b):
+    """Barge 2a and 2b differ in their values and their static metadata (name, notes): the
+    run is compiled once for both (as the sweeps are), and each keeps its own result."""
+    from jaxtow._simulate import _run_jit
+
+    ma, mb = model(barge_2a), model(barge_2b)
+    assert ma.vessel.name != mb.vessel.name
+    before = _run_jit._cache_size()
+    opts = dict(t1=5.0, n_save=13, solver="tsit5", rtol=3e-7, atol=3e-7)  # a set used once
+    sa = simulate(ma, initial_state(ma, psi0=0.1), **opts)
+    sb = simulate(mb, initial_state(mb, psi0=0.1), **opts)
+    assert _run_jit._cache_size() - before == 1
+    assert bool(sa.success) and bool(sb.success)
+    assert not np.allclose(np.asarray(sa.ys), np.asarray(sb.ys))
+
+
 @pytest.mark.slow  # default-suite time
 def test_time_domain_agrees_with_linear_stability(barge_2a, barge_2b):
     """From a small perturbation of the straight-behind equilibrium the run converges back
