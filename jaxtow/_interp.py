@@ -132,11 +132,11 @@ def _uniform_from(x: np.ndarray) -> int | None:
 
 class HermiteAxis(eqx.Module):
     """One axis of a table: the ascending grid ``x`` with its `interval_tables` for the end
-    rule ``ends``, built once (from a concrete grid) when the table is; a uniform grid (or one
-    uniform after its first node) finds the cell by division instead of a search. ``weights(xq)`` gives
-    the rows and weights at ``xq`` (clamped to [x0, xn]); ``axis(y, xq)`` interpolates
-    along the last axis of ``y``. The grid is fixed at construction: build a new axis (a new
-    table) for another grid."""
+    rule ``ends``, built once (from a concrete grid) when the table is; a uniform grid (or
+    one uniform after its first node) finds the cell by division instead of a search.
+    ``weights(xq)`` gives the rows and weights at ``xq`` (clamped to [x0, xn]);
+    ``axis(y, xq)`` interpolates along the last axis of ``y``. The grid is fixed at
+    construction: build a new axis (a new table) for another grid."""
 
     x: Float[Array, " n"]
     cells: Float[Array, "n1 21"]  # per interval: x_i, the 4 rows, the 4 × 4 polynomial
