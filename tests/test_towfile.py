@@ -528,7 +528,7 @@ def test_a_hull_mesh_is_solved_once_and_cached_beside_the_tow_file(tmp_path):
     plain = tmp_path / "plain.toml"
     plain.write_text(BARGE2A)
     with pytest.raises(SystemExit, match=r"no \[hull\] mesh"):
-        main(["bem", str(plain)])
+        main(["bem", str(plain), "--out", str(tmp_path / "plain_out")])
 
 
 def test_towline_from_the_catalogue_and_a_composite_line():
