@@ -14,6 +14,8 @@ towline has a stretch mode of |λ| ~ √(EA'/(l0'(m'+a11'))), e.g. 52 at EA' = 3
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import diffrax
 import equinox as eqx
 import jax
@@ -65,55 +67,154 @@ def choose_solver(model: TowModel, y0, t1: float, t0: float = 0.0) -> str:
     return "kvaerno5" if float(np.max(np.abs(lam))) * (t1 - t0) > STIFF_THRESHOLD else "tsit5"
 
 
+class Integration(eqx.Module):
+    """What `integrate` returns: ``ts`` (n,) and ``ys`` (n, 6) on the save grid (inf after a
+    failure, as diffrax fills its buffers), ``y1`` the last accepted state, ``result`` (a
+    `diffrax.RESULTS`) and ``n_steps`` (accepted steps)."""
+
+    ts: Float[Array, " n"]
+    ys: Float[Array, "n 6"]
+    y1: Float[Array, " 6"]
+    result: diffrax.RESULTS
+    n_steps: Int[Array, ""]
+
+
+class _Carry(NamedTuple):
+    tprev: Array
+    tnext: Array
+    y: Array
+    solver_state: object
+    controller_state: object
+    result: diffrax.RESULTS
+    n_steps: Array
+    n_accepted: Array
+    save_index: Array
+    ys: Array
+
+
 def integrate(
     model,
     y0,
-    t0,
-    t1,
+    ts,
     *,
-    ts=None,
     solver: str = "tsit5",
     rtol: float = 1e-8,
     atol: float = 1e-8,
     max_steps: int = 200_000,
-    adjoint=None,
-):
-    """The one diffrax set-up of jaxtow: the tow vector field from ``y0`` over [t0, t1] with
-    an adaptive PID step-size controller, saved at ``ts`` (or at t1 only), never throwing
-    (the caller reads ``result``). ``adjoint``: a diffrax adjoint (default
-    `diffrax.RecursiveCheckpointAdjoint`; `diffrax.ForwardMode` for forward-mode
-    sensitivities, as the shooting of periodic orbits uses). Returns the diffrax solution."""
-    saveat = diffrax.SaveAt(t1=True) if ts is None else diffrax.SaveAt(ts=ts)
-    return diffrax.diffeqsolve(
-        diffrax.ODETerm(vector_field),
-        _solver(solver),
+) -> Integration:
+    """The one time integration of jaxtow: the tow vector field from ``y0`` over
+    [ts[0], ts[-1]] with diffrax's solver and adaptive PID step-size controller, saved at the
+    increasing grid ``ts`` (the caller checks it), never throwing (the caller reads
+    ``result``).
+
+    The step loop is diffrax's own (`diffrax.diffeqsolve` without events, jumps or dense
+    output), written here with its public stepping API (``solver.init``/``step``,
+    ``controller.init``/``adapt_step_size``) for one reason: `diffeqsolve` checks
+    ``SaveAt(ts=...)`` with `equinox.error_if`, which compiles to host callbacks, and JAX's
+    persistent cache never stores a program that holds one — every time-domain run was
+    compiled afresh on every run of the command line. The steps taken, the interpolation at
+    the save points and the result codes are diffrax's; a test holds the two equal.
+    Differentiable in forward mode (`jax.jvp`/`jax.jacfwd`: the limit-cycle shooting);
+    reverse mode through the adaptive loop is not supported.
+    """
+    term = diffrax.ODETerm(vector_field)
+    controller = diffrax.PIDController(rtol=rtol, atol=atol)
+    solver_ = _solver(solver)
+    if isinstance(solver_, diffrax.AbstractImplicitSolver):  # as diffeqsolve: the step's tolerances
+        solver_ = eqx.tree_at(
+            lambda s: (s.root_finder.rtol, s.root_finder.atol, s.root_finder.norm),
+            solver_,
+            (rtol, atol, controller.norm),
+        )
+    ts = jnp.asarray(ts, dtype=float)
+    y0 = jnp.asarray(y0, dtype=float)
+    t0, t1 = ts[0], ts[-1]
+    n = ts.shape[0]
+    order = solver_.error_order(term)
+    # the first step is diffeqsolve's: its initial-step estimate sees the time-direction
+    # wrapper, not an ODETerm, and falls back to a step of 0.01
+    tnext, controller_state = controller.init(term, t0, t1, y0, 0.01, model, solver_.func, order)
+    tnext = jnp.minimum(tnext, t1)
+    # diffrax rounds a step end within 100 ulp of t1 to t1 (no sliver intervals)
+    t1_floor = jax.lax.fori_loop(0, 100, lambda _, t: jnp.nextafter(t, -jnp.inf), t1)
+
+    def step(c: _Carry) -> _Carry:
+        y, y_error, dense, solver_state, solver_result = solver_.step(
+            term, c.tprev, c.tnext, c.y, model, c.solver_state, False
+        )
+        y_error = jnp.where(jnp.isnan(y_error), jnp.inf, y_error)
+        keep, tprev, tnext, jump, controller_state, controller_result = controller.adapt_step_size(
+            c.tprev, c.tnext, c.y, y, model, y_error, order, c.controller_state
+        )
+        assert jump is False  # no jump times: the solver's first-same-as-last stays valid
+        tprev = jnp.minimum(tprev, t1)
+        tnext = jnp.where(tnext > t1_floor, jnp.where(keep, t1, tprev + 0.5 * (t1 - tprev)), tnext)
+        y = jnp.where(keep, y, c.y)
+        solver_state = jax.tree.map(
+            lambda a, b: jnp.where(keep, a, b), solver_state, c.solver_state
+        )
+        solver_result = diffrax.RESULTS.where(keep, solver_result, diffrax.RESULTS.successful)
+        result = diffrax.RESULTS.where(diffrax.is_okay(c.result), solver_result, c.result)
+        result = diffrax.RESULTS.where(diffrax.is_okay(result), controller_result, result)
+        interpolation = solver_.interpolation_cls(t0=c.tprev, t1=c.tnext, **dense)
+
+        def save_pending(s):
+            return keep & (s[0] < n) & (ts[jnp.minimum(s[0], n - 1)] <= c.tnext)
+
+        def save_one(s):
+            i, ys = s
+            return i + 1, ys.at[i].set(interpolation.evaluate(ts[i]))
+
+        save_index, ys = jax.lax.while_loop(save_pending, save_one, (c.save_index, c.ys))
+        return _Carry(
+            tprev,
+            tnext,
+            y,
+            solver_state,
+            controller_state,
+            result,
+            c.n_steps + 1,
+            c.n_accepted + jnp.where(keep, 1, 0),
+            save_index,
+            ys,
+        )
+
+    def running(c: _Carry):
+        return (c.tprev < t1) & diffrax.is_successful(c.result) & (c.n_steps < max_steps)
+
+    zero = jnp.zeros((), dtype=int)
+    start = _Carry(
         t0,
-        t1,
-        None,
+        tnext,
         y0,
-        args=model,
-        saveat=saveat,
-        stepsize_controller=diffrax.PIDController(rtol=rtol, atol=atol),
-        max_steps=max_steps,
-        adjoint=diffrax.RecursiveCheckpointAdjoint() if adjoint is None else adjoint,
-        throw=False,
+        solver_.init(term, t0, tnext, y0, model),
+        controller_state,
+        diffrax.RESULTS.successful,
+        zero,
+        zero,
+        zero,
+        jnp.full((n, y0.shape[0]), jnp.inf),
+    )
+    end = jax.lax.while_loop(running, step, start)
+    unfinished = (end.tprev < t1) & diffrax.is_successful(end.result)
+    result = diffrax.RESULTS.where(unfinished, diffrax.RESULTS.max_steps_reached, end.result)
+    saved = jnp.arange(n) < end.save_index
+    return Integration(
+        ts=jnp.where(saved, ts, jnp.inf),
+        ys=end.ys,
+        y1=end.y,
+        result=result,
+        n_steps=end.n_accepted,
     )
 
 
 def _run(model, y0, ts, *, solver: str, rtol: float, atol: float, max_steps: int):
-    sol = integrate(
-        model, y0, ts[0], ts[-1], ts=ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps
-    )
+    sol = integrate(model, y0, ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps)
     ok = sol.result == diffrax.RESULTS.successful
     flags = jax.vmap(lambda y: validity(model, y))(sol.ys)
     flags["physics_valid"] = jax.vmap(all_valid)(flags)
     return Simulation(
-        ts=sol.ts,
-        ys=sol.ys,
-        success=ok,
-        result=sol.result,
-        n_steps=jnp.asarray(sol.stats["num_accepted_steps"]),
-        validity=flags,
+        ts=sol.ts, ys=sol.ys, success=ok, result=sol.result, n_steps=sol.n_steps, validity=flags
     )
 
 

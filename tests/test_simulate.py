@@ -50,6 +50,76 @@ def test_models_differing_only_in_metadata_share_the_compiled_run(barge_2a, barg
     assert not np.allclose(np.asarray(sa.ys), np.asarray(sb.ys))
 
 
+def _diffeqsolve(m, y0, ts, solver, max_steps=200_000):
+    """The same run through diffrax's driver, saved at ``ts``."""
+    import diffrax
+
+    from jaxtow._dynamics import vector_field
+    from jaxtow._simulate import _solver
+
+    sol = diffrax.diffeqsolve(
+        diffrax.ODETerm(vector_field),
+        _solver(solver),
+        ts[0],
+        ts[-1],
+        None,
+        y0,
+        args=m,
+        saveat=diffrax.SaveAt(ts=ts),
+        stepsize_controller=diffrax.PIDController(rtol=1e-8, atol=1e-8),
+        max_steps=max_steps,
+        throw=False,
+    )
+    return sol.ts, sol.ys, sol.result, sol.stats["num_accepted_steps"]
+
+
+@pytest.mark.parametrize(
+    ("solver", "t1", "max_steps", "tol"),
+    [("tsit5", 60.0, 200_000, 0.0), ("kvaerno5", 4.0, 200_000, 1e-9), ("tsit5", 60.0, 40, 0.0)],
+)
+def test_integration_takes_diffeqsolves_steps(barge_2a, solver, t1, max_steps, tol):
+    """jaxtow's step loop is diffrax's driver without its SaveAt check: the same accepted
+    steps, the same saved states (bit for bit with the explicit solver; the implicit one
+    within 1e-9 as its Newton solves compile differently), and the same failure when the
+    steps run out (the rest of the grid left at inf)."""
+    import jax
+
+    from jaxtow._simulate import integrate
+
+    m = model(barge_2a)
+    y0 = initial_state(m, psi0=0.2, y0=0.1)
+    ts = jnp.linspace(0.0, t1, 121)
+    ref_ts, ref_ys, ref_result, ref_steps = jax.jit(
+        lambda y: _diffeqsolve(m, y, ts, solver, max_steps)
+    )(y0)
+    got = jax.jit(lambda y: integrate(m, y, ts, solver=solver, max_steps=max_steps))(y0)
+    assert int(got.n_steps) == int(ref_steps) > 20
+    assert got.result == ref_result
+    np.testing.assert_array_equal(np.asarray(got.ts), np.asarray(ref_ts))
+    finite = np.isfinite(np.asarray(ref_ys))
+    np.testing.assert_array_equal(np.isfinite(np.asarray(got.ys)), finite)
+    np.testing.assert_allclose(
+        np.asarray(got.ys)[finite], np.asarray(ref_ys)[finite], rtol=0, atol=tol
+    )
+    assert finite.all() == (max_steps > 40)
+
+
+def test_time_domain_program_can_be_cached(barge_2a):
+    """JAX's persistent cache never stores a program holding a host callback (diffrax's
+    check of SaveAt(ts) was one): the compiled time-domain run holds none, so a second
+    command-line run reads it from the cache instead of compiling it again."""
+    from jaxtow._simulate import _batch_jit, _run_jit
+
+    m = model(barge_2a)
+    y0 = initial_state(m, psi0=0.2)
+    ts = jnp.linspace(0.0, 10.0, 11)
+    opts = dict(solver="tsit5", rtol=1e-8, atol=1e-8, max_steps=1000)
+    single = _run_jit.lower(m, y0, ts, **opts).as_text()
+    batch = _batch_jit.lower(m, y0[None], {}, ts, batch_size=None, **opts).as_text()
+    assert "stablehlo.while" in single  # the step loop is there
+    assert "callback" not in single and "callback" not in batch
+
+
 @pytest.mark.slow  # default-suite time
 def test_time_domain_agrees_with_linear_stability(barge_2a, barge_2b):
     """From a small perturbation of the straight-behind equilibrium the run converges back

@@ -5,7 +5,6 @@ from __future__ import annotations
 import dataclasses
 import functools
 
-import diffrax
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -43,10 +42,9 @@ class PeriodicOrbit:
 
 
 def _flow(model, y0, T, n_save=None, rtol=1e-10, atol=1e-12):
-    ts = None if n_save is None else jnp.linspace(0.0, T, n_save)
-    ys = integrate(model, y0, 0.0, T, ts=ts, rtol=rtol, atol=atol, adjoint=diffrax.ForwardMode()).ys
-    assert ys is not None  # diffrax saves at t1 or at ts
-    return ys
+    if n_save is None:  # the state at T only
+        return integrate(model, y0, jnp.stack([0.0, T]), rtol=rtol, atol=atol).y1[None]
+    return integrate(model, y0, jnp.linspace(0.0, T, n_save), rtol=rtol, atol=atol).ys
 
 
 @functools.partial(jax.jit, static_argnums=(0, 3))
@@ -61,7 +59,7 @@ def periodic_orbit(
 ) -> PeriodicOrbit:
     """Limit cycle through the guess (y0, period) by single shooting: Newton on
     {φ_T(y0) − y0 = 0, ψ(0) = 0} for (y0, T) with the monodromy matrix from forward-mode
-    autodiff through diffrax. Raises if Newton does not reach ``tol``."""
+    autodiff through the integration. Raises if Newton does not reach ``tol``."""
     z = jnp.concatenate([jnp.asarray(y0, float), jnp.asarray([period], float)])
 
     def R(z):
