@@ -39,7 +39,7 @@ class Simulation(eqx.Module):
     (the solver reached t1), ``result`` (diffrax result code), ``n_steps`` (accepted steps),
     ``validity`` ({name: (n,)}: the physics' validity flags and numbers along the run,
     `jaxtow.validity`; ``physics_valid`` is their logical and), ``valid`` (n,) (finite saved
-    states: after a failure diffrax fills the rest with inf)."""
+    states: after a failure the rest of the grid is inf, as in diffrax)."""
 
     ts: Float[Array, " n"]
     ys: Float[Array, "n 6"]

@@ -1,5 +1,6 @@
 """The persistent compilation cache of the command line: a second run compiles nothing new."""
 
+import json
 import os
 import subprocess
 import sys
@@ -31,6 +32,42 @@ def test_second_cli_run_hits_the_cache(tmp_path):
     assert len(first) > 20  # every kernel of the run is stored
     _cli(args, {cc.ENV: str(folder)})
     assert _entries(folder) == first  # the second run compiled nothing new
+
+
+COUNTED = """
+import atexit, json, os, sys
+import jax.monitoring
+counts = {"requests": 0, "hits": 0}
+names = {"/jax/compilation_cache/compile_requests_use_cache": "requests",
+         "/jax/compilation_cache/cache_hits": "hits"}
+def count(event, **_):
+    if event in names:
+        counts[names[event]] += 1
+jax.monitoring.register_event_listener(count)
+atexit.register(lambda: open(os.environ["COUNTS"], "w").write(json.dumps(counts)))
+from jaxtow.cli import main
+sys.exit(main())
+"""
+
+
+@pytest.mark.slow  # default-suite time
+def test_second_run_with_time_domain_runs_reads_every_program_from_the_cache(tmp_path):
+    """The time-domain run is a program like the others: a second `jaxtow simulate` asks
+    the cache for every program it compiles and finds each one there."""
+    folder, counts = tmp_path / "xla", tmp_path / "counts.json"
+    args = ["simulate", "--tows", "barge2b", "--t1", "20", "--n-save", "201"]
+    env = {k: v for k, v in os.environ.items() if k != cc.ENV} | {cc.ENV: str(folder)}
+    for run in ("first", "second"):
+        out = ["--out", str(tmp_path / run)]
+        subprocess.run(
+            [sys.executable, "-c", COUNTED, *args, *out],
+            env=env | {"COUNTS": str(counts)},
+            check=True,
+            capture_output=True,
+        )
+    second = json.loads(counts.read_text())
+    assert second["requests"] > 5
+    assert second["hits"] == second["requests"]
 
 
 @pytest.mark.slow  # default-suite time

@@ -234,3 +234,24 @@ def test_cli_resistance_writes_outputs(tmp_path, capsys):
 def test_no_load_gives_zero_shares_not_nan(calm):
     b = R.resistance(calm, CALM_SEA, 0.0)
     assert float(b.total) == 0.0 and np.all(np.asarray(b.shares) == 0.0)
+
+
+def test_calm_sea_has_no_wave_resistance_and_the_tp_grid_is_checked(tow):
+    """Hs = 0 is a calm sea (`SeaState` allows it): no wave drift and nothing overtaken,
+    not an error. `resistance_grid` checks its Tp grid before its compiled call (under a
+    caller's tracing, on the result), so the compiled grid holds no run-time check: JAX's
+    persistent cache stores it."""
+    b = R.resistance(tow, CALM_SEA, 2.0)
+    assert float(b.as_dict()["waves"]) == 0.0 and float(b.overtaken_energy) == 0.0
+    sea = jt.presets.sea_state("survival")
+    with pytest.raises(ValueError, match="'tps' must be > 0"):
+        R.resistance_grid(tow, sea, [1.0], [0.0, 7.0])
+    with pytest.raises(Exception, match="'tps' must be > 0"):
+        jax.jit(lambda t: R.resistance_grid(tow, sea, jnp.array([1.0]), t).total)(
+            jnp.array([-1.0])
+        ).block_until_ready()
+    from jaxtow.resistance._budget import _resistance_grid
+
+    grid = jax.jit(lambda s, t: _resistance_grid(tow, sea, s, t, heading=0.0, tug=None).total)
+    text = grid.lower(jnp.array([1.0, 2.0]), jnp.array([6.0, 8.0])).as_text()
+    assert "stablehlo" in text and "callback" not in text

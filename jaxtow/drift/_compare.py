@@ -17,6 +17,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from .._rules import guard
 from ..waves import DEFAULT_OMEGA, Jonswap, mean_drift
 from ._methods import METHODS, ZONE_EDGES, ZONE_NAMES, zone
 
@@ -70,10 +71,17 @@ def irregular_drift(method, wl, hs, tp, beta, u=0.0, v=0.0, *, omega=None, gamma
     """Mean drift (Fx, Fy, Nz) [N, N, N·m] of a waterline method in a JONSWAP sea (Hs, Tp, γ):
     F̄ = 2∫ S(ω) F(ω) dω (eq. 2.29) on the grid ``omega`` (default `jaxtow.waves.DEFAULT_OMEGA`). Differentiable and vmappable in hs, tp, beta, u, v; ``method`` is a function
     from `METHODS` or its name."""
-    fn = METHODS[method] if isinstance(method, str) else method
     w = jnp.asarray(DEFAULT_OMEGA if omega is None else omega, float)
-    S = Jonswap(hs=hs, tp=tp, gamma=gamma)(w)
-    return mean_drift(w, S, fn(wl, w, beta, u, v, **kwargs).force)
+    sea = Jonswap(hs=hs, tp=tp, gamma=gamma)  # checks concrete values
+    # traced ones are checked on the result, with the same rules
+    return guard(method_mean_drift(method, wl, w, sea(w), beta, u, v, **kwargs), sea.checks())
+
+
+def method_mean_drift(method, wl, omega, S, beta, u=0.0, v=0.0, **kwargs):
+    """`irregular_drift` for a spectrum ``S`` already evaluated on ``omega`` (unchecked:
+    the caller holds a checked sea state)."""
+    fn = METHODS[method] if isinstance(method, str) else method
+    return mean_drift(omega, S, fn(wl, omega, beta, u, v, **kwargs).force)
 
 
 def qtf_from_method(method, wl, omega, beta, **kwargs):

@@ -14,11 +14,12 @@ from ..drift import (
     QTF,
     Waterline,
     encounter_frequency,
-    irregular_drift,
     irregular_sailing_drift,
 )
+from ..drift._compare import method_mean_drift
 from ..drift._sailing import check_form
-from ..waves import DEFAULT_OMEGA, jonswap, spectral_integral
+from ..waves import DEFAULT_OMEGA, spectral_integral
+from ..waves._spectra import _jonswap
 from ._flow import OCIMFLoad
 from ._sea import SeaState
 from ._tug import Tug
@@ -68,27 +69,24 @@ class WaveDrift(eqx.Module):
         """Fraction of the sea's m0 at frequencies the tow overtakes (encounter frequency
         ω_e ≤ 0): there the drift theory does not apply and the drift is taken as zero, so
         the wave resistance is incomplete by what these waves would add."""
-        S = jonswap(self.omega, hs=hs, tp=tp, gamma=gamma)
+        S = self.spectrum(hs, tp, gamma)
         over = (encounter_frequency(self.omega, beta, u, v) <= 0).astype(S.dtype)
-        return spectral_integral(self.omega, S, over) / spectral_integral(
-            self.omega, S, jnp.ones_like(S)
-        )
+        m0 = spectral_integral(self.omega, S, jnp.ones_like(S))
+        share = spectral_integral(self.omega, S, over) / jnp.where(m0 > 0, m0, 1.0)
+        return jnp.where(m0 > 0, share, 0.0)  # Hs = 0: no waves, none overtaken
+
+    def spectrum(self, hs, tp, gamma):
+        """JONSWAP S(ω) on ``omega`` (`jaxtow.waves.jonswap`; Hs = 0 gives a calm sea). The
+        values are the sea state's, checked by its rules (`SeaState`; `resistance_grid`
+        checks its Tp grid), so no run-time check is compiled in."""
+        return _jonswap(self.omega, hs, tp, gamma, 0.07, 0.09, False)
 
     def __call__(self, hs, tp, gamma, beta, u, v):
+        S = self.spectrum(hs, tp, gamma)
         if self.qtf is not None:
-            S = jonswap(self.omega, hs=hs, tp=tp, gamma=gamma)
             return irregular_sailing_drift(self.qtf, self.omega, S, beta, u, v, 0.0, form=self.form)
-        return irregular_drift(
-            self.method,
-            self.waterline,
-            hs,
-            tp,
-            beta,
-            u,
-            v,
-            omega=self.omega,
-            gamma=gamma,
-            **dict(self.options),
+        return method_mean_drift(
+            self.method, self.waterline, self.omega, S, beta, u, v, **dict(self.options)
         )
 
 
@@ -223,12 +221,20 @@ def required_pull(
     return guard(PullRequirement(towing_force=total, bollard_pull=bp, budget=b), checks)
 
 
-@eqx.filter_jit
 def resistance_grid(
     tow: TowResistance, sea: SeaState, speeds, tps, *, heading=0.0, tug: Tug | None = None
 ) -> Budget:
     """`resistance` over a (speed, Tp) grid in one vmapped call: a `Budget` whose arrays
-    lead with (n_speed, n_tp) (thesis figs 7.2-7.4)."""
+    lead with (n_speed, n_tp) (thesis figs 7.2-7.4). The grids are checked before the
+    compiled call (under a caller's tracing, on its result)."""
+    NONNEGATIVE.check("speeds", speeds)
+    POSITIVE.check("tps", tps)
+    out = _resistance_grid(tow, sea, speeds, tps, heading=heading, tug=tug)
+    return guard(out, [NONNEGATIVE.traced("speeds", speeds), POSITIVE.traced("tps", tps)])
+
+
+@eqx.filter_jit
+def _resistance_grid(tow, sea, speeds, tps, *, heading, tug):
     speeds, tps = jnp.asarray(speeds, float), jnp.asarray(tps, float)
 
     def one(s, t):

@@ -63,6 +63,17 @@ def _integrate(omega, y):
     return jnp.sum(0.5 * (y[..., 1:] + y[..., :-1]) * jnp.diff(omega), axis=-1)
 
 
+def _jonswap(omega, hs, tp, gamma, sigma_a, sigma_b, normalise: bool):
+    """The JONSWAP formula of `jonswap`, unchecked (the `Jonswap` sea state's fields are
+    checked by their rules)."""
+    s = _bretschneider(omega, hs, tp) * _peak_enhancement(
+        jnp.asarray(omega), tp, gamma, sigma_a, sigma_b
+    )
+    if normalise:
+        s = s * (hs**2 / 16.0) / _integrate(omega, s)
+    return s
+
+
 def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: bool = False):
     """JONSWAP spectrum S(ω) [m²s/rad], thesis eq. 3.1 (Journée & Massie form).
 
@@ -75,12 +86,7 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
     V.POSITIVE.check("hs", hs)
     V.POSITIVE.check("tp", tp)
     GAMMA_RULE.check("gamma", gamma)
-    s = _bretschneider(omega, hs, tp) * _peak_enhancement(
-        jnp.asarray(omega), tp, gamma, sigma_a, sigma_b
-    )
-    if normalise:
-        m0 = _integrate(omega, s)
-        s = s * (hs**2 / 16.0) / m0
+    s = _jonswap(omega, hs, tp, gamma, sigma_a, sigma_b, normalise)
     # under jit or vmap the eager checks cannot see the values: the same rules, traced
     return V.guard(
         s,
@@ -102,16 +108,28 @@ def pierson_moskowitz(omega, *, hs, tp):
     """
     V.POSITIVE.check("hs", hs)
     V.POSITIVE.check("tp", tp)
-    pos, w = _positive_omega(omega)
-    wp = 2 * jnp.pi / tp
-    s = 5.0 / 16.0 * hs**2 * wp**4 * w**-5 * jnp.exp(-1.25 * (wp / w) ** 4)
     return V.guard(
-        jnp.where(pos, s, 0.0), [V.POSITIVE.traced("hs", hs), V.POSITIVE.traced("tp", tp)]
+        _pierson_moskowitz(omega, hs, tp),
+        [V.POSITIVE.traced("hs", hs), V.POSITIVE.traced("tp", tp)],
     )
 
 
+def _pierson_moskowitz(omega, hs, tp):
+    """The formula of `pierson_moskowitz`, unchecked."""
+    pos, w = _positive_omega(omega)
+    wp = 2 * jnp.pi / tp
+    return jnp.where(pos, 5.0 / 16.0 * hs**2 * wp**4 * w**-5 * jnp.exp(-1.25 * (wp / w) ** 4), 0.0)
+
+
 class AbstractSpectrum(V.Checked):
-    """A sea state as a pytree: ``spectrum(omega)`` → S(ω) [m²s/rad]."""
+    """A sea state as a pytree: ``spectrum(omega)`` → S(ω) [m²s/rad].
+
+    Its fields are checked by their rules: eagerly at construction, and under tracing by
+    the ``checks()`` of the model that holds it (`jaxtow.equilibria`, `jaxtow.eigenvalues`
+    and the other entry points guard them; a sweep or `jaxtow.simulate` checks its values
+    before it runs). Evaluating the spectrum adds no check of its own: a run-time check
+    inside a compiled program is a host callback, and JAX's persistent cache never stores
+    such a program."""
 
     hs: eqx.AbstractVar[Float[Array, ""]]
     tp: eqx.AbstractVar[Float[Array, ""]]
@@ -139,14 +157,8 @@ class Jonswap(AbstractSpectrum):
     normalise: bool = eqx.field(static=True, default=False)
 
     def __call__(self, omega):
-        return jonswap(
-            omega,
-            hs=self.hs,
-            tp=self.tp,
-            gamma=self.gamma,
-            sigma_a=self.sigma_a,
-            sigma_b=self.sigma_b,
-            normalise=self.normalise,
+        return _jonswap(
+            omega, self.hs, self.tp, self.gamma, self.sigma_a, self.sigma_b, self.normalise
         )
 
 
@@ -157,7 +169,7 @@ class PiersonMoskowitz(AbstractSpectrum):
     tp: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
 
     def __call__(self, omega):
-        return pierson_moskowitz(omega, hs=self.hs, tp=self.tp)
+        return _pierson_moskowitz(omega, self.hs, self.tp)
 
 
 def spectral_moment(omega, S, n):
