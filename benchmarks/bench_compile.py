@@ -16,7 +16,12 @@ compiling the wave-map kernel cost.
    compile time). The same for the kernel on the same model without the wave force (calm
    water): the floor the wave force adds to.
 
+3. With ``--against CHECKOUT`` (another jaxtow source tree, e.g. a ``git worktree`` of an
+   earlier commit): only the commands, run as pairs (first, second) alternately from that
+   tree and from this one, ``--repeat`` times each, so that both see the same machine load.
+
     python benchmarks/bench_compile.py [--json out.json] [--skip-commands] [--commands calm]
+    python benchmarks/bench_compile.py --against ../old --commands report-waves --repeat 3
 """
 
 from __future__ import annotations
@@ -109,6 +114,33 @@ def _run(args, env, cwd):
     return time.perf_counter() - t
 
 
+def _pair(cmd, tree, tmp):
+    """A first and a second run of ``cmd`` from the source tree ``tree`` into a fresh cache."""
+    env = dict(os.environ, JAXTOW_COMPILE_CACHE=str(tmp / "xla"), PYTHONPATH=str(tree))
+    return [_run([*cmd, "--out", str(tmp / f"out{i}")], env, tmp) for i in range(2)]
+
+
+def _compare(args):
+    here = Path(__file__).resolve().parents[1]
+    trees = {"against": Path(args.against).resolve(), "this": here}
+    res: dict = {"against": str(trees["against"]), "runs": []}
+    for name in args.commands.split(","):
+        for rep in range(args.repeat):
+            for label, tree in trees.items():
+                with tempfile.TemporaryDirectory() as tmp:
+                    first, second = _pair(COMMANDS[name], tree, Path(tmp))
+                run = dict(command=name, tree=label, rep=rep, first_s=first, second_s=second)
+                res["runs"].append(run | {"ratio": first / second})
+                print(
+                    f"jaxtow {name} ({label}): {first:.1f} s, then {second:.1f} s "
+                    f"({first / second:.2f}x)",
+                    flush=True,
+                )
+    if args.json:
+        Path(args.json).write_text(json.dumps(res, indent=2))
+    return res
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
@@ -118,7 +150,11 @@ def main(argv=None):
     ap.add_argument(
         "--commands", default=",".join(COMMANDS), help=f"comma-separated, of {list(COMMANDS)}"
     )
+    ap.add_argument("--against", default=None, help="another jaxtow source tree to compare")
+    ap.add_argument("--repeat", type=int, default=3, help="pairs per tree with --against")
     args = ap.parse_args(argv)
+    if args.against:
+        return _compare(args)
     res: dict = {"commands": {}, "wave_kernel": {}, "calm_kernel": {}}
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
