@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import diffrax
 import equinox as eqx
+import equinox.internal as eqxi
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -54,10 +55,12 @@ class Simulation(eqx.Module):
 
 
 def _solver(name: str):
+    # the stages in a plain loop, as diffrax's forward-mode adjoint sets them: forward-mode
+    # differentiable (its default loop is reverse-mode only), the same arithmetic
     if name == "tsit5":
-        return diffrax.Tsit5()
+        return diffrax.Tsit5(scan_kind="lax")
     if name == "kvaerno5":
-        return diffrax.Kvaerno5()
+        return diffrax.Kvaerno5(scan_kind="lax")
     raise ValueError(f"parameter 'solver' must be one of {SOLVERS + ('auto',)}, got {name!r}")
 
 
@@ -136,7 +139,7 @@ def integrate(
     tnext, controller_state = controller.init(term, t0, t1, y0, 0.01, model, solver_.func, order)
     tnext = jnp.minimum(tnext, t1)
     # diffrax rounds a step end within 100 ulp of t1 to t1 (no sliver intervals)
-    t1_floor = jax.lax.fori_loop(0, 100, lambda _, t: jnp.nextafter(t, -jnp.inf), t1)
+    t1_floor = jax.lax.fori_loop(0, 100, lambda _, t: eqxi.prevbefore(t), t1)
 
     def step(c: _Carry) -> _Carry:
         y, y_error, dense, solver_state, solver_result = solver_.step(
@@ -165,7 +168,9 @@ def integrate(
             i, ys = s
             return i + 1, ys.at[i].set(interpolation.evaluate(ts[i]))
 
-        save_index, ys = jax.lax.while_loop(save_pending, save_one, (c.save_index, c.ys))
+        save_index, ys = eqxi.while_loop(
+            save_pending, save_one, (c.save_index, c.ys), buffers=lambda s: s[1], kind="lax"
+        )
         return _Carry(
             tprev,
             tnext,
@@ -195,7 +200,9 @@ def integrate(
         zero,
         jnp.full((n, y0.shape[0]), jnp.inf),
     )
-    end = jax.lax.while_loop(running, step, start)
+    # equinox's loop (as diffrax's driver): the save grid is a buffer written in place, not
+    # selected whole at every step of a batch member that has finished (under vmap)
+    end = eqxi.while_loop(running, step, start, buffers=lambda c: c.ys, kind="lax")
     unfinished = (end.tprev < t1) & diffrax.is_successful(end.result)
     result = diffrax.RESULTS.where(unfinished, diffrax.RESULTS.max_steps_reached, end.result)
     saved = jnp.arange(n) < end.save_index

@@ -55,11 +55,10 @@ def _diffeqsolve(m, y0, ts, solver, max_steps=200_000):
     import diffrax
 
     from jaxtow._dynamics import vector_field
-    from jaxtow._simulate import _solver
 
     sol = diffrax.diffeqsolve(
         diffrax.ODETerm(vector_field),
-        _solver(solver),
+        {"tsit5": diffrax.Tsit5(), "kvaerno5": diffrax.Kvaerno5()}[solver],
         ts[0],
         ts[-1],
         None,

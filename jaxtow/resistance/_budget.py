@@ -79,7 +79,7 @@ class WaveDrift(eqx.Module):
         """JONSWAP S(ω) on ``omega`` (`jaxtow.waves.jonswap`; Hs = 0 gives a calm sea). The
         values are the sea state's, checked by its rules (`SeaState`; `resistance_grid`
         checks its Tp grid), so no run-time check is compiled in."""
-        return _jonswap(self.omega, hs, tp, gamma, 0.07, 0.09, False)
+        return _jonswap(self.omega, hs, tp, gamma)
 
     def __call__(self, hs, tp, gamma, beta, u, v):
         S = self.spectrum(hs, tp, gamma)

@@ -63,7 +63,7 @@ def _integrate(omega, y):
     return jnp.sum(0.5 * (y[..., 1:] + y[..., :-1]) * jnp.diff(omega), axis=-1)
 
 
-def _jonswap(omega, hs, tp, gamma, sigma_a, sigma_b, normalise: bool):
+def _jonswap(omega, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: bool = False):
     """The JONSWAP formula of `jonswap`, unchecked (the `Jonswap` sea state's fields are
     checked by their rules)."""
     s = _bretschneider(omega, hs, tp) * _peak_enhancement(
