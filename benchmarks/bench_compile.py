@@ -8,7 +8,7 @@ compiling the wave-map kernel cost.
    runs: the full report takes about an hour on 2 cores). Printed: both times and their
    ratio (target: the second run at least 2x faster).
 2. The sweep kernel of the wave study (Barge 2a, regular head waves, the shipped near-field
-   database, 401 scan headings, as `jaxtow.reports.WaveStudy` runs it), in a fresh process
+   database, 401 scan headings, as `jaxtow.studies.WaveStudy` runs it), in a fresh process
    into an empty cache and again from the cache: the time to trace it (Python, every run),
    to lower it and to compile it (XLA; read back from the cache the second time), its
    traced operations and the kernels of the compiled program (the functions XLA generates
@@ -67,7 +67,7 @@ import equinox as eqx
 from jaxtow import enable_compile_cache
 enable_compile_cache(sys.argv[1])
 from jaxtow.forces import NoExternalForce
-from jaxtow.reports import WaveStudy
+from jaxtow.studies import WaveStudy
 from jaxtow._sweep import make_batched_kernel
 st = WaveStudy(n=5, n_grid=401, compile_cache=False)
 model = st.wave_model("2a")

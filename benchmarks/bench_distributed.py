@@ -65,7 +65,7 @@ def main(argv=None):
         }
         options = dict(method="analytic")
     else:
-        from jaxtow.study import barge2_wave_model
+        from jaxtow.presets import barge2_wave_model
 
         model = barge2_wave_model("2a", l0=1.0, xp=0.5, omega=1.0, zeta_a=1.25)
         grid = {

@@ -53,7 +53,7 @@ def one(job: str, size: int, chunked: bool) -> dict:
         def work():
             return jt.sweep_arrays(m, grid, method="analytic", chunk_size=chunk)
     elif job == "waves":
-        m = jt.study.barge2_wave_model("2a")
+        m = jt.presets.barge2_wave_model("2a")
         grid = {
             "l0": np.linspace(0.3, 3.0, side),
             "external.omega": np.linspace(0.3, 2.0, size // side),

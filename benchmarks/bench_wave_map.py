@@ -7,7 +7,7 @@ bracketing the heading residual, Jacobians by autodiff, LAPACK eigenvalues. The 
 is timed on a random subset of the same points (it would take hours on the full map) and the
 per-point costs are compared; on that subset the two must agree. JIT compile time is
 reported separately. Drift forces: the shipped Barge 2 near-field panel database
-(`jaxtow.drift.database`, with its sectional moments, so the yaw-rate column of the
+(`jaxtow.presets.database`, with its sectional moments, so the yaw-rate column of the
 wave-drift damping is on in both codes) with Aranha's finite form for the forward speed;
 ``--qtf standin`` for the Kashiwagi-waterline stand-in.
 
@@ -31,7 +31,8 @@ from baseline_numpy_waves import NumpyQTF, stability_map  # noqa: E402
 
 import jaxtow as jt  # noqa: E402
 from jaxtow._sweep import make_specialised_kernel, sweep_arrays  # noqa: E402
-from jaxtow.study import barge2_wave_model, nearest_straight  # noqa: E402
+from jaxtow.presets import barge2_wave_model
+from jaxtow.studies import nearest_straight  # noqa: E402
 
 
 def main(argv=None):

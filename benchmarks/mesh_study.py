@@ -10,7 +10,7 @@
     python benchmarks/mesh_study.py --runs RUNS --ship barge2=1 --ship barge1=1.5
 
 For every Barge 2 mesh of RUNS and each drift method, the four maps of the wave study
-(`jaxtow.reports.verdict_maps`: 2a and 2b over (l0', ω) and (l0', Tp)); between successive
+(`jaxtow.studies.verdict_maps`: 2a and 2b over (l0', ω) and (l0', Tp)); between successive
 meshes, the fraction of map points whose verdict changes and the largest change of max Re λ.
 The QTF representation is compared the same way on the finest mesh: the tensor Hermite
 interpolant with three-point slopes (the default) against the same table smoothed in heading
@@ -46,7 +46,7 @@ def runs_of(runs: Path, hull: str, only=None) -> dict:
 
 def verdict_study(runs: dict, n: int, smooth: int, rep_size=None, methods=METHODS) -> dict:
     from jaxtow.io import load_qtf
-    from jaxtow.reports import MAP_NAMES, verdict_change, verdict_maps
+    from jaxtow.studies import MAP_NAMES, verdict_change, verdict_maps
 
     rows, maps = [], {}
     t0 = time.perf_counter()

@@ -27,7 +27,7 @@ import numpy as np
 
 import jaxtow as jt
 from jaxtow.io import nan_audit as audit
-from jaxtow.study import barge2_wave_model
+from jaxtow.presets import barge2_wave_model
 
 
 def calm_grid(n: int) -> dict:

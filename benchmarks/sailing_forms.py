@@ -56,11 +56,11 @@ def compute() -> dict:
         for label, name in PANEL.items()
         if (DATA / f"{name}_far_field.nc").is_file()
     }
-    hulls["Barge 1 and 2, waterline stand-in"] = jt.study.approximate_qtf()
+    hulls["Barge 1 and 2, waterline stand-in"] = jt.presets.approximate_qtf()
     tug, sea = jt.presets.illustrative_tug(), jt.presets.sea_state("sailing")
     out = {}
     for label, q in hulls.items():
-        out[label] = jt.reports.sailing_forms(
+        out[label] = jt.studies.sailing_forms(
             q,
             speed=2.0,
             hs=2.4,
@@ -79,7 +79,7 @@ def main(argv=None):
     args = ap.parse_args(argv)
     store_bem(args.bem)
     res = compute()
-    table = jt.reports.forms_table(res)
+    table = jt.studies.forms_table(res)
     print(table)
     if args.write:
         DOCS.mkdir(parents=True, exist_ok=True)

@@ -12,19 +12,23 @@ private (a leading underscore) and re-exported here or by its subpackage:
 * ``jaxtow.continuation`` — branches, bifurcations, limit cycles;
 * ``jaxtow.design`` — towline and bridle design, sensitivities;
 * ``jaxtow.lines`` — the towline catalogue (wire, chain, fibre rope) and composite lines;
-* ``jaxtow.presets`` — the built-in vessels and every documented estimate;
-* ``jaxtow.study``, ``jaxtow.reports`` — the thesis studies and their claims;
-* ``jaxtow.io``, ``jaxtow.plotting``, ``jaxtow.bem``, ``jaxtow.cli`` — files, figures, the
-  optional panel-method pre-processor and the command line (loaded on first use).
+* ``jaxtow.presets`` — the built-in vessels, tows, drift databases and every documented
+  estimate;
+* ``jaxtow.studies`` — what runs: the thesis's wave study and its claims, the assessment of
+  one tow (``jaxtow study``);
+* ``jaxtow.reports`` — the HTML report and the claims' text;
+* ``jaxtow.io``, ``jaxtow.plotting``, ``jaxtow.bem`` — files, figures and the optional
+  panel-method pre-processor (loaded on first use);
+* ``jaxtow.cli`` — the command line, the application on top of the library (import it as a
+  module; it is the one part of jaxtow that may use this facade).
 
 Importing jaxtow enables float64 in JAX (see `jaxtow._config`; set ``JAXTOW_ENABLE_X64=0``
 before import to opt out).
 """
 
-from importlib.metadata import PackageNotFoundError as _NotFound, version as _version
 from typing import TYPE_CHECKING
 
-from ._config import enable_x64_from_environment as _enable_x64
+from ._config import __version__ as __version__, enable_x64_from_environment as _enable_x64
 from ._lazy import attach as _attach
 
 _enable_x64()
@@ -34,7 +38,6 @@ _enable_x64()
 if TYPE_CHECKING:
     from . import (
         bem as bem,
-        cli as cli,
         continuation as continuation,
         design as design,
         distributed as distributed,
@@ -46,7 +49,7 @@ if TYPE_CHECKING:
         presets as presets,
         reports as reports,
         resistance as resistance,
-        study as study,
+        studies as studies,
         tow as tow,
         waves as waves,
     )
@@ -76,6 +79,12 @@ if TYPE_CHECKING:
         trajectory as trajectory,
     )
     from ._parameters import get_parameter as get_parameter, with_parameters as with_parameters
+    from ._progress import (
+        AbstractProgressMeter as AbstractProgressMeter,
+        NoProgressMeter as NoProgressMeter,
+        TqdmProgressMeter as TqdmProgressMeter,
+    )
+    from ._results import sensitivities as sensitivities, sweep as sweep
     from ._rules import (
         FINITE as FINITE,
         NONNEGATIVE as NONNEGATIVE,
@@ -105,7 +114,7 @@ if TYPE_CHECKING:
         spectral_abscissa as spectral_abscissa,
         stability as stability,
     )
-    from ._sweep import sweep as sweep, sweep_arrays as sweep_arrays
+    from ._sweep import sweep_arrays as sweep_arrays
     from ._towline import (
         AbstractTowline as AbstractTowline,
         Bridle as Bridle,
@@ -166,6 +175,10 @@ __all__ = [
     "stability",
     "sweep",
     "sweep_arrays",
+    "sensitivities",
+    "AbstractProgressMeter",
+    "NoProgressMeter",
+    "TqdmProgressMeter",
     "AbstractTowline",
     "Bridle",
     "CatenaryTowline",
@@ -181,10 +194,5 @@ __all__ = [
     "VESSEL_PARAMETERS",
     "Vessel",
 ]
-
-try:
-    __version__ = _version("jaxtow")
-except _NotFound:  # running from a source tree that was never installed
-    __version__ = "0+unknown"
 
 __getattr__, __dir__ = _attach(__name__, __file__)

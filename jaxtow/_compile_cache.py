@@ -25,6 +25,8 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import jax
+
 #: Environment variable: the cache folder, or "off" / "0" / "false" / "no" to disable.
 ENV = "JAXTOW_COMPILE_CACHE"
 #: Programs compiling faster than this are not cached. JAX's default is 1 s; jaxtow keeps
@@ -47,7 +49,6 @@ def enable_compile_cache(path=None) -> Path | None:
     """Turn on the persistent compilation cache (see the module docstring) and return its
     folder, or None where it is switched off. ``path`` overrides the environment.
     Idempotent; a folder the user set for JAX beforehand is kept."""
-    import jax
 
     current = getattr(jax.config, "jax_compilation_cache_dir")  # noqa: B009 (untyped flag)
     if path is None:

@@ -1,4 +1,4 @@
-"""Numerical precision policy.
+"""The package's version and its numerical precision policy.
 
 Stability work needs float64: eigenvalue margins of order 1e-4 and equilibrium residuals of
 1e-12 are below float32 resolution. Importing :mod:`jaxtow` therefore switches JAX to 64-bit
@@ -16,6 +16,12 @@ from __future__ import annotations
 
 import os
 import sys
+from importlib.metadata import PackageNotFoundError, version
+
+try:
+    __version__ = version("jaxtow")
+except PackageNotFoundError:  # running from a source tree that was never installed
+    __version__ = "0+unknown"
 
 _OFF = ("0", "false", "no", "off")
 

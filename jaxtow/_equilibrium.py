@@ -29,6 +29,7 @@ import math
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
 from . import _rules as V
@@ -87,7 +88,6 @@ class Equilibria(eqx.Module):
 
     def select(self, mask) -> Equilibria:
         """Eager: keep the slots where `mask` (a concrete boolean array) holds."""
-        import numpy as np
 
         keep = np.flatnonzero(np.asarray(mask))
         return jax.tree_util.tree_map(lambda a: a[keep] if jnp.ndim(a) else a, self)

@@ -14,6 +14,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ._dynamics import TowModel, force_breakdown, sway_offset
+from ._equilibrium import equilibria as find_equilibria
 
 
 def trajectory(model: TowModel, sim) -> dict:
@@ -124,7 +125,6 @@ def fishtail_metrics(
     ``t_end`` and ``slack`` (fraction of samples with a slack towline: zero tension, l' < l0'
     for the elastic laws; a line with weight never goes slack).
     """
-    from ._equilibrium import equilibria as find_equilibria
 
     tr = trajectory(model, sim)
     t, yoff, psi = tr["t"], tr["sway_offset"], tr["psi"]

@@ -1,26 +1,49 @@
-"""A minimal text progress bar for chunked sweeps (stderr; no dependency)."""
+"""Progress meters, passed in to long loops of chunks as objects (diffrax's
+``progress_meter=`` is the pattern): `NoProgressMeter` (the default of the library) and
+`TqdmProgressMeter` (a tqdm bar on stderr, what the command line uses). A loop calls
+``meter.start(total, label)`` and then ``update(n)`` and ``close()`` on what it returns."""
 
 from __future__ import annotations
 
-import sys
-import time
+from typing import Protocol
+
+from tqdm.auto import tqdm
 
 
-class Progress:
-    def __init__(self, total: int, label: str = "sweep", enabled: bool = True, stream=None):
-        self.total, self.label, self.enabled = total, label, enabled
-        self.stream = stream or sys.stderr
-        self.done = 0
-        self.t0 = time.perf_counter()
+class ProgressBar(Protocol):
+    def update(self, n: int = 1) -> object: ...
+    def close(self) -> None: ...
 
+
+class AbstractProgressMeter:
+    """What a chunked loop reports its progress to."""
+
+    def start(self, total: int, label: str) -> ProgressBar:
+        raise NotImplementedError
+
+
+class _Silent:
     def update(self, n: int = 1) -> None:
-        self.done += n
-        if not self.enabled:
-            return
-        frac = self.done / max(self.total, 1)
-        bar = "#" * int(30 * frac)
-        dt = time.perf_counter() - self.t0
-        self.stream.write(f"\r{self.label} [{bar:<30}] {self.done}/{self.total} chunks {dt:6.1f}s")
-        if self.done >= self.total:
-            self.stream.write("\n")
-        self.stream.flush()
+        pass
+
+    def close(self) -> None:
+        pass
+
+
+class NoProgressMeter(AbstractProgressMeter):
+    """Reports nothing."""
+
+    def start(self, total: int, label: str) -> ProgressBar:
+        return _Silent()
+
+
+class TqdmProgressMeter(AbstractProgressMeter):
+    """A tqdm bar on stderr, one step a chunk."""
+
+    def start(self, total: int, label: str) -> ProgressBar:
+        return tqdm(total=total, desc=label, unit="chunk", leave=True)
+
+
+def progress_meter(enabled: bool) -> AbstractProgressMeter:
+    """The meter of a ``progress=True/False`` switch of the studies and the command line."""
+    return TqdmProgressMeter() if enabled else NoProgressMeter()

@@ -8,8 +8,9 @@ available JAX devices with `jax.sharding` (a 1-D mesh over the point axis). The 
 compiled once per chunk shape and reused across chunks and across models of the same
 structure.
 
-`sweep_arrays` returns plain NumPy arrays; `sweep` wraps them in an `xarray.Dataset`
-(assembled in `jaxtow.io.dataset`, so this module does not import xarray).
+`sweep_arrays` returns plain NumPy arrays; `jaxtow.sweep` wraps them in an `xarray.Dataset`
+(assembled in `jaxtow.io.dataset`: this module imports no file format). Progress and
+checkpoints are objects passed in (``progress_meter=``, ``checkpoint=``).
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from jax.sharding import Mesh, NamedSharding, PartitionSpec as P
 from ._dynamics import TowModel, all_valid, validity
 from ._equilibrium import analytic_equilibria, equilibria_fixed
 from ._parameters import check_values, with_parameters
-from ._progress import Progress
+from ._progress import AbstractProgressMeter, NoProgressMeter
 from ._stability import (
     ABSCISSA_METHODS,
     EIG_METHODS,
@@ -295,7 +296,7 @@ def sweep_arrays(
     *,
     method: str = "numerical",
     chunk_size: int = 16384,
-    progress: bool = False,
+    progress_meter: AbstractProgressMeter | None = None,
     devices=None,
     n_grid: int = 2001,
     max_roots: int = 4,
@@ -320,9 +321,12 @@ def sweep_arrays(
     instance (its arrays become compile-time constants): about 2x faster for an expensive
     force model (a QTF wave force), at one compilation per model instead of one per model
     structure; pass a `make_specialised_kernel` as ``kernel`` to reuse it).
-    ``checkpoint``: a folder where each finished chunk is saved as it completes
-    (`jaxtow.io.checkpoint`); a sweep interrupted and run again with the same folder, model,
-    grid and options computes only the chunks that are missing.
+    ``progress_meter``: where each finished chunk is reported (`jaxtow.TqdmProgressMeter`
+    for a bar). ``checkpoint``: an object whose ``open(model, names, axes, chunk, options,
+    nchunks)`` gives a store that ``get``s and ``put``s finished chunks, such as
+    `jaxtow.io.checkpoint.Checkpoint` (a folder where each chunk is saved as it completes);
+    a sweep interrupted and run again with the same folder, model, grid and options computes
+    only the chunks that are missing.
     To spread the chunks over several processes or machines, see `jaxtow.distributed`.
     """
     mesh, ndev = _mesh(devices)
@@ -351,16 +355,19 @@ def sweep_arrays(
         )
     store = None
     if checkpoint is not None:
-        from .io.checkpoint import ChunkStore, fingerprint
-
+        if isinstance(checkpoint, str | os.PathLike) or not callable(
+            getattr(checkpoint, "open", None)
+        ):
+            raise TypeError(
+                "parameter 'checkpoint': an object with open(), such as "
+                f"jaxtow.io.Checkpoint(folder), got {checkpoint!r}; jaxtow.sweep takes a folder"
+            )
         opts = dict(
             options, eigenvalues=eigenvalues, user_kernel=user_kernel, specialise=specialise
         )
-        store = ChunkStore(
-            checkpoint, fingerprint(model, plan.names, plan.axes, plan.chunk, opts), plan.nchunks
-        )
+        store = checkpoint.open(model, plan.names, plan.axes, plan.chunk, opts, plan.nchunks)
     sharding = NamedSharding(mesh, P("points"))
-    bar = Progress(plan.nchunks, label="sweep", enabled=progress)
+    bar = (progress_meter or NoProgressMeter()).start(plan.nchunks, "sweep")
     pieces = []
     for c in range(plan.nchunks):  # chunks, not grid points: each chunk is one vmapped call
         piece = None if store is None else store.get(c)
@@ -371,12 +378,5 @@ def sweep_arrays(
                 store.put(c, piece)
         pieces.append(piece)
         bar.update()
+    bar.close()
     return plan.assemble(pieces)
-
-
-def sweep(model: TowModel, grid: Mapping[str, np.ndarray], **options):
-    """`sweep_arrays` as an `xarray.Dataset` with coordinates, units and provenance."""
-    from .io.dataset import sweep_dataset
-
-    arrays = sweep_arrays(model, grid, **options)
-    return sweep_dataset(model, arrays, method=options.get("method", "numerical"))

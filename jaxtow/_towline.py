@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 from jaxtyping import Array, Float
 
 from . import _rules as V
@@ -131,8 +132,6 @@ class Bridle(eqx.Module):
 
     def __check_init__(self):
         if V.is_concrete(self.legs) and V.is_concrete(self.apex):
-            import numpy as np
-
             legs, apex = np.asarray(self.legs), np.asarray(self.apex)
             if legs.shape != (2, 2) or apex.shape != (2,):
                 raise ValueError(

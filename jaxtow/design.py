@@ -51,7 +51,6 @@ __all__ = [
     "optimise_towline",
     "grid_search",
     "sensitivity_arrays",
-    "sensitivities",
 ]
 
 #: Design variables and their default box (non-dimensional): l0' towline length, x_p'
@@ -181,11 +180,6 @@ class DesignResult:
     @property
     def stable(self) -> bool:
         return bool(np.all(np.asarray(classify(self.abscissa)) == STABLE))
-
-    def to_dataset(self):
-        from .io.design import design_dataset
-
-        return design_dataset(self)
 
 
 def _check_bounds(variables, bounds, model=None):
@@ -396,16 +390,3 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
     svals = jnp.asarray(svals, float)
     x, g, a = jax.jit(jax.vmap(lambda s: one(with_parameters(model, **{sname: s}))))(svals)
     return names, np.asarray(x), np.asarray(g), np.asarray(a), (sname, np.asarray(svals))
-
-
-def sensitivities(model: TowModel, parameters=None, *, sweep: dict | None = None, psi0=0.0):
-    """Sensitivity of the stability margin to every (uncertain) input, as an xarray Dataset
-    over (point, parameter): ``gradient`` ∂(max Re λ)/∂p, ``elasticity`` p·∂(max Re λ)/∂p
-    (the change of max Re λ for a 100 % change of p: comparable across parameters),
-    ``value`` p, ``abscissa``, and ``importance``, the rank by mean |elasticity| (1 = largest). See
-    `sensitivity_arrays` for the arguments."""
-    from .io.design import sensitivity_dataset
-
-    return sensitivity_dataset(
-        *sensitivity_arrays(model, parameters, sweep=sweep, psi0=psi0), model=model
-    )

@@ -32,6 +32,7 @@ from ._dynamics import TowModel
 from ._parameters import check_values
 from ._simulate import Simulation, simulate_batch as _simulate_batch
 from ._sweep import make_batched_kernel, make_specialised_kernel, plan_sweep
+from .io.dataset import sweep_dataset
 
 
 def _dask():
@@ -88,7 +89,6 @@ def sweep(
     progress; its tasks are retried by the scheduler when a worker is lost).
     """
     dask, da = _dask()
-    from .io.dataset import sweep_dataset
 
     for bad in ("devices", "kernel", "checkpoint", "progress"):
         if bad in options:

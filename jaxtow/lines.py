@@ -42,6 +42,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ._towline import CatenaryTowline, CompositeTowline, Towline
 from ._units import RHO_SEA, G
 
 __all__ = [
@@ -125,7 +126,6 @@ class LineType:
         """The tow model's line of unstretched ``length`` [m] on the tow of ``scales``:
         an elastic catenary (`jaxtow.CatenaryTowline`) with this line's weight, or with
         ``catenary=False`` the straight elastic line (`jaxtow.Towline`) of the same EA."""
-        from ._towline import CatenaryTowline, Towline
 
         if catenary:
             return CatenaryTowline.from_si(
@@ -234,7 +234,6 @@ def line(name: str, diameter: float, *, grade: str = "R3") -> LineType:
 def composite(segments, *, scales, xp: float, yp: float = 0.0):
     """A line of ``segments`` [(LineType, length [m]), ...] in series, from the hawser to
     the tug (`jaxtow.CompositeTowline`)."""
-    from ._towline import CompositeTowline
 
     segments = list(segments)
     if len(segments) < 2:

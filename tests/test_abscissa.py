@@ -102,7 +102,7 @@ def test_abscissa_on_calm_map(barge_2a):
 def test_abscissa_on_wave_map():
     """The (l0', ω) map of Barge 2a in head waves on the shipped panel database: both
     methods on the same Jacobians, in one compiled call."""
-    m = jt.study.barge2_wave_model("2a")
+    m = jt.presets.barge2_wave_model("2a")
 
     def both(l0, omega):
         mdl = with_parameters(m, **{"l0": l0, "external.omega": omega})

@@ -57,7 +57,7 @@ def test_spectra_and_integrals_on_bad_grids():
     with pytest.raises(Exception, match="'tp' must be > 0"):
         jax.vmap(lambda tp: W.jonswap(w, hs=2.0, tp=tp))(jnp.array([8.0, 0.0])).block_until_ready()
     # a descending integration grid for the irregular-sea force is refused at construction
-    qtf = jt.drift.database("barge2", "near_field")
+    qtf = jt.presets.database("barge2", "near_field")
     with pytest.raises(ValueError, match="ascending"):
         jt.forces.IrregularWaveDriftForce(
             qtf=qtf, spectrum=W.Jonswap(hs=2.0, tp=8.0), omega=w[::-1], scales=P.barge2_scales()
@@ -234,16 +234,19 @@ def test_an_interrupted_sweep_resumes_from_its_checkpoint(tmp_path, monkeypatch,
     monkeypatch.setattr(S, "make_batched_kernel", flaky)
     ck = tmp_path / "chunks"
     with pytest.raises(KeyboardInterrupt):
-        jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=ck)
+        jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=jt.io.Checkpoint(ck))
     assert sorted(p.name for p in ck.glob("chunk_*.npz")) == ["chunk_00000.npz", "chunk_00001.npz"]
     state.update(calls=0, fail_at=None)
-    got = jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=ck)
+    got = jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=jt.io.Checkpoint(ck))
     assert state["calls"] == 2
     for k in ("psi", "max_real", "valid", "stability"):
         np.testing.assert_array_equal(got[k], ref[k])
     with pytest.raises(ValueError, match="chunks of another sweep"):
         jt.sweep_arrays(
-            model, {**grid, "l0": np.linspace(1.0, 2.0, 4)}, chunk_size=8, checkpoint=ck
+            model,
+            {**grid, "l0": np.linspace(1.0, 2.0, 4)},
+            chunk_size=8,
+            checkpoint=jt.io.Checkpoint(ck),
         )
 
 

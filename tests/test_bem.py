@@ -55,7 +55,7 @@ def test_barge2_mesh_matches_the_waterline_and_block_coefficient():
         np.degrees(np.arctan2(-bow[:, 2], bow[:, 0])), np.degrees(r["flare"]), atol=1e-9
     )
     p0, p1, _ = m.waterline()
-    wl = jt.drift.barge2_waterline()
+    wl = jt.presets.barge2_waterline()
     assert np.sum(np.linalg.norm(p1 - p0, axis=1)) == pytest.approx(
         float(np.sum(wl.lengths)), rel=1e-12
     )

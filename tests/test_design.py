@@ -110,7 +110,7 @@ def test_sensitivity_gradients_match_finite_differences(model_2a):
     for i, n in enumerate(names):
         fd = _fd4(f, x0, i, 1e-3 * max(abs(float(x0[i])), 1e-2))
         assert abs(g[0, i] - fd) <= 1e-5 * max(abs(fd), 1e-3 * scale), n
-    ds = D.sensitivities(m, ["a22", "a66", "Nv", "Yv", "EA"], sweep={"l0": [0.8, 1.2]})
+    ds = jt.sensitivities(m, ["a22", "a66", "Nv", "Yv", "EA"], sweep={"l0": [0.8, 1.2]})
     assert ds.gradient.shape == (2, 5) and sorted(ds.importance.values.tolist()) == [1, 2, 3, 4, 5]
     np.testing.assert_allclose(ds.elasticity, ds.value * ds.gradient)
 
@@ -165,7 +165,7 @@ def test_optimiser_beats_grid_with_far_fewer_evaluations_and_stabilises_2a(model
     assert (
         abs(math.degrees(r.psi[0])) < 10.1
     )  # the heading limit holds (penalty: 0.05 deg overshoot)
-    ds = r.to_dataset()
+    ds = jt.io.design_dataset(r)
     assert float(ds.design_yp) == pytest.approx(r.params["yp"]) and ds.attrs["method"] == "BFGS"
     # time domain agrees near the equilibrium: a 3 deg disturbance of the design dies out
     designed = jt.with_parameters(model_2a, **r.params)

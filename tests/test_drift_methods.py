@@ -14,14 +14,13 @@ from jaxtow._special import k1, r_function
 from jaxtow._units import RHO_SEA, G
 from jaxtow.drift import (
     METHODS,
-    barge2_waterline,
-    box_waterline,
     dnv2014,
     faltinsen,
     fujii_takahashi,
     kashiwagi,
     kuroda,
 )
+from jaxtow.presets import barge2_waterline, box_waterline
 
 RG = RHO_SEA * G
 B = 24.4
@@ -80,13 +79,13 @@ def test_barge2_rake_is_consistent_with_published_mass(barge2):
 def test_read_write_waterline_round_trip(tmp_path, barge2):
     f = tmp_path / "wl.txt"
     f.write_text("# half waterline\n38.1 0 0 5\n38.1 12.2 0 5\n-38.1 12.2 0 5\n-38.1 0\n")
-    wl = jt.drift.read_waterline(f, draft=5.0)
+    wl = jt.io.read_waterline(f, draft=5.0)
     np.testing.assert_allclose(
         np.asarray(wl.points), np.asarray(box_waterline().points), atol=1e-12
     )
     g = tmp_path / "b2.txt"
-    jt.drift.write_waterline(g, barge2)
-    back = jt.drift.read_waterline(g, draft=5.0, block_coefficient=float(barge2.block_coefficient))
+    jt.io.write_waterline(g, barge2)
+    back = jt.io.read_waterline(g, draft=5.0, block_coefficient=float(barge2.block_coefficient))
     np.testing.assert_allclose(np.asarray(back.points), np.asarray(barge2.points), atol=1e-12)
     np.testing.assert_allclose(np.asarray(back.flare), np.asarray(barge2.flare), atol=1e-12)
 
@@ -118,7 +117,7 @@ def test_half_waterline_off_centreline_is_not_closed(tmp_path):
     f = tmp_path / "bad.txt"
     f.write_text("38.1 1.0\n38.1 12.2\n-38.1 12.2\n-38.1 0\n")
     with pytest.raises(ValueError, match="not closed"):
-        jt.drift.read_waterline(f, draft=5.0)
+        jt.io.read_waterline(f, draft=5.0)
 
 
 # ---------------------------------------------------------------- limits and symmetry

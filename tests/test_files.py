@@ -397,7 +397,7 @@ def _write(tmp_path, rows, name="x.8"):
 def test_round_trip_keeps_the_full_circle(tmp_path):
     """Write -> read of a jaxtow full-circle table returns its grid (the +-180 column was
     dropped or moved)."""
-    q = jt.drift.database("barge2", "far_field")
+    q = jt.presets.database("barge2", "far_field")
     jt.io.write_wamit_drift(q, tmp_path / "b.8", ulen=1.0)
     back = jt.io.read_wamit_drift(tmp_path / "b.8", ulen=1.0)
     assert back.periodic and back.beta.shape == q.beta.shape
@@ -443,7 +443,7 @@ def test_slow_drift_with_the_full_qtf():
     terms, computed here directly."""
     from jaxtow.forces import SlowDriftForce
 
-    q = jt.drift.database("barge2", "near_field")
+    q = jt.presets.database("barge2", "near_field")
     sea = jt.waves.Jonswap(hs=2.4, tp=7.0)
     sc = jt.presets.barge2_scales()
     kw = dict(seed=1, n=64, form="linear", yaw_rate=False)  # the cheapest to compile
@@ -491,7 +491,7 @@ def test_slow_drift_with_the_full_qtf():
 def test_drift_source_takes_a_file_with_its_options(tmp_path):
     """Study builders, `jaxtow report waves --qtf` and `jaxtow resistance` name a file with its
     reader options (ULEN, rho, g, reference point, symmetry) through `drift_source`."""
-    from jaxtow.drift import drift_source
+    from jaxtow.presets import drift_source
 
     f = _write(tmp_path, _records(heads=(0.0, 45.0, 90.0, 135.0, 180.0)))
     q, desc = drift_source(
@@ -511,7 +511,7 @@ def test_drift_source_takes_a_file_with_its_options(tmp_path):
         drift_source({"file": str(f), "ulem": 2.0})
     with pytest.raises(ValueError, match="needs 'file'"):
         drift_source({"ulen": 2.0})
-    m = jt.study.barge2_wave_model("2a", qtf={"file": str(f), "ulen": 2.0})
+    m = jt.presets.barge2_wave_model("2a", qtf={"file": str(f), "ulen": 2.0})
     np.testing.assert_allclose(
         np.asarray(m.external.qtf.values),
         np.asarray(drift_source({"file": str(f), "ulen": 2.0})[0].values),

@@ -186,7 +186,7 @@ def test_tabulated_pull_curve_matches_quadratic(calm):
 @pytest.mark.slow  # default-suite time (the operating-speed solve compiles for 40 s)
 def test_cli_table():
     from jaxtow.cli.resistance import build, format_table, read_config
-    from jaxtow.reports._resistance import evaluate
+    from jaxtow.studies._resistance import evaluate
 
     tow, tug, seas, heading, route = build(read_config("barge2"))
     row = evaluate(tow, tug, seas[1], heading, route, n_tp=5)

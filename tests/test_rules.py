@@ -40,7 +40,7 @@ def test_sweep_grids_use_the_same_rule():
     with pytest.raises(ValueError, match="'xp' must lie in"):
         jt.sweep(_model(), {"xp": [0.2, 1.5]})
     with pytest.raises(ValueError, match="'omega' must be > 0"):
-        jt.sweep(jt.study.barge2_wave_model("2a"), {"external.omega": [0.5, -1.0]})
+        jt.sweep(jt.presets.barge2_wave_model("2a"), {"external.omega": [0.5, -1.0]})
 
 
 def _raises_under_jit(model):
@@ -57,7 +57,7 @@ def _raises_under_jit(model):
     ],
 )
 def test_traced_checks_cover_the_external_force(path, value, name):
-    m0 = jt.study.barge2_wave_model("2a")
+    m0 = jt.presets.barge2_wave_model("2a")
     with pytest.raises(ValueError, match=f"'{name}'"):  # with_parameters checks eagerly
         jt.with_parameters(m0, **{path: value})
     # a model that bypasses the eager checks (eqx.tree_at): only the traced checks see it
@@ -74,7 +74,7 @@ def test_traced_checks_cover_the_external_force(path, value, name):
 
 
 def test_traced_checks_reach_the_spectrum_of_an_irregular_sea():
-    m = jt.study.barge2_irregular_model("2a", hs=2.4, tp=7.0)
+    m = jt.presets.barge2_irregular_model("2a", hs=2.4, tp=7.0)
     names = " ".join(msg for _, msg in m.checks())
     for field in ("'hs'", "'tp'", "'gamma'", "'omega'", "'EA'", "'m'", "'psi_max'"):
         assert field in names

@@ -225,7 +225,7 @@ def test_steady_form_equals_the_force_along_steady_states_and_drops_only_the_yaw
     from jaxtow._equilibrium import equilibrium_kinematics, hull_forces_at_heading
 
     q = hull_tables(breadth=8.0)
-    m = jt.study.barge2_wave_model("2a", qtf=q)
+    m = jt.presets.barge2_wave_model("2a", qtf=q)
     ext = m.external
     assert ext.yaw_rate and not ext.steady().yaw_rate
     comb = jt.forces.CombinedForce((ext, ext))
@@ -291,7 +291,7 @@ def test_sweep_over_tug_speed_equals_rebuilt_models_calm():
 
 @pytest.mark.slow
 def test_tug_speed_gradient_equals_finite_differences():
-    m = jt.study.barge2_wave_model("2a", l0=2.5, omega=1.3, zeta_a=1.25)
+    m = jt.presets.barge2_wave_model("2a", l0=2.5, omega=1.3, zeta_a=1.25)
     names, _, grad, _, _ = jt.design.sensitivity_arrays(m, ["u_tug", "external.omega"])
     g = float(grad[0, 0])
 
@@ -314,7 +314,7 @@ def test_wave_sweep_carries_validity_and_tug_speed_sweep_matches_rebuilt():
     """One wave kernel (chunks of two points) serves both sweeps: the (U_tug, ζa) map crosses
     U/(ω ζa) = 1, and each U_tug row equals the model rebuilt at that speed."""
     opts = dict(n_grid=201, chunk_size=2)
-    base = jt.study.barge2_wave_model("2a", l0=2.5, omega=1.0, zeta_a=1.25)
+    base = jt.presets.barge2_wave_model("2a", l0=2.5, omega=1.0, zeta_a=1.25)
     speeds, amps = np.array([1.5, 2.5]), np.array([1.0, 2.0])
     ds = jt.sweep(base, {"u_tug": speeds, "external.zeta_a": amps}, **opts)
     for name in ("froude_ok", "no_separation", "tau_ok", "encounter_positive", "line_taut"):
@@ -328,7 +328,7 @@ def test_wave_sweep_carries_validity_and_tug_speed_sweep_matches_rebuilt():
     assert np.array_equal(flag, (np.broadcast_to(sep, got.shape) < 1.0)[straight])
     assert flag.any() and (~flag).any()  # the map crosses the limit
     for i, U in enumerate(speeds):
-        m = jt.study.barge2_wave_model("2a", l0=2.5, omega=1.0, zeta_a=1.25, u_tug=U)
+        m = jt.presets.barge2_wave_model("2a", l0=2.5, omega=1.0, zeta_a=1.25, u_tug=U)
         ref = jt.sweep(m, {"external.zeta_a": amps}, **opts)
         for k in ("max_real", "psi", "tension"):
             np.testing.assert_allclose(
@@ -356,7 +356,7 @@ def test_wind_sweep_carries_validity():
 
 
 def test_irregular_and_wind_forces_have_validity():
-    m = jt.study.barge2_irregular_model("2a", hs=2.4, tp=7.0)
+    m = jt.presets.barge2_irregular_model("2a", hs=2.4, tp=7.0)
     y = jnp.array([1.0, 0.0, 0.0, 2.6, 0.0, 0.0])
     flags = jt.validity(m, y)
     assert (
@@ -379,7 +379,7 @@ def test_irregular_and_wind_forces_have_validity():
 
 @pytest.mark.slow  # default-suite time
 def test_simulation_carries_validity():
-    m = jt.study.barge2_wave_model("2a", l0=2.5, omega=1.6, zeta_a=1.25)
+    m = jt.presets.barge2_wave_model("2a", l0=2.5, omega=1.6, zeta_a=1.25)
     sim = jt.simulate(m, jt.initial_state(m, psi0=0.1), t1=5.0, n_save=11)
     assert sim.validity["physics_valid"].shape == (11,)
     assert bool(np.all(sim.validity["froude_ok"]))
@@ -424,7 +424,7 @@ def test_forms_shift_a_motion_peak_once_or_twice():
         omega=w, beta=BH, fx=np.broadcast_to(fx, shape), fy=np.zeros(shape), nz=np.zeros(shape)
     )
     u = 0.3
-    r = jt.reports.sailing_forms(
+    r = jt.studies.sailing_forms(
         q, speed=u, omega_peak_grid=np.arange(0.8, 1.1, 0.0002), omega=np.linspace(0.2, 3, 120)
     )
     d = 1.0 * u / G
@@ -433,7 +433,7 @@ def test_forms_shift_a_motion_peak_once_or_twice():
     assert r["thesis"]["peak_shift"] == pytest.approx(-2 * d, rel=0.2)
     assert abs(r["linear"]["peak_shift"]) < d
     assert r["aranha"]["operating_speed"] is None
-    table = jt.reports.forms_table({"synthetic": r})
+    table = jt.studies.forms_table({"synthetic": r})
     assert "| synthetic | thesis |" in table
 
 
@@ -477,5 +477,5 @@ def test_panel_database_carries_the_yaw_rate_column():
     assert np.all(np.isfinite(B)) and np.all(B[:, 2] != 0.0)
     head = np.asarray(yaw_rate_damping(q, 1.0, 0.0))
     assert abs(head[0]) < 1e-9 * np.max(np.abs(np.asarray(q.sectional)))  # B_16 odd
-    m = jt.study.barge2_wave_model("2a", qtf=q)
+    m = jt.presets.barge2_wave_model("2a", qtf=q)
     assert bool(jt.validity(m, jnp.array([1.0, 0, 0, 2.6, 0, 0]))["yaw_rate_damping"])

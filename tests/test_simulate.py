@@ -118,7 +118,7 @@ def test_time_domain_program_can_be_cached(barge_2a):
     assert "stablehlo.while" in single  # the step loop is there
     assert "callback" not in single and "callback" not in batch
     # nor in an irregular sea, whose spectrum the model's rules check before the run
-    m = jt.study.barge2_irregular_model("2a", hs=2.4, tp=7.0)
+    m = jt.presets.barge2_irregular_model("2a", hs=2.4, tp=7.0)
     irregular = _run_jit.lower(m, initial_state(m, psi0=0.2), ts, **opts).as_text()
     assert "callback" not in irregular
 

@@ -1,6 +1,6 @@
 """The wave study on the shipped panel databases: the databases themselves, drift-source
 names, the smoothed representation, the slowly varying drift, every claim computation of
-`jaxtow.reports.WaveStudy` on a small grid, and the attribution."""
+`jaxtow.studies.WaveStudy` on a small grid, and the attribution."""
 
 import json
 import math
@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 
 import jaxtow as jt
-from jaxtow import reports
-from jaxtow.drift import database, database_attrs, drift_source
-from jaxtow.reports import _waves as W
+from jaxtow import studies
+from jaxtow.presets import database, database_attrs, drift_source
+from jaxtow.studies import _claims as W
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
 RHO_G = jt.RHO_SEA * jt.G
@@ -21,8 +21,8 @@ RHO_G = jt.RHO_SEA * jt.G
 # ---------------------------------------------------------------- shipped databases
 
 
-@pytest.mark.parametrize("hull", jt.drift.DATABASES)
-@pytest.mark.parametrize("method", jt.drift.DATABASE_METHODS)
+@pytest.mark.parametrize("hull", jt.presets.DATABASES)
+@pytest.mark.parametrize("method", jt.presets.DATABASE_METHODS)
 def test_shipped_databases_cover_the_grid_and_carry_provenance(hull, method):
     q = database(hull, method)
     w, b = np.asarray(q.omega), np.degrees(np.asarray(q.beta))
@@ -79,7 +79,7 @@ def test_shipped_barge2_is_the_finest_mesh_of_the_documented_study():
     study = json.loads((DOCS / "data" / "mesh_study.json").read_text())
     sizes = [r["panel_size"] for r in study["rows"]]
     assert len(sizes) >= 3 and min(sizes) <= 1.0
-    for method in jt.drift.DATABASE_METHODS:
+    for method in jt.presets.DATABASE_METHODS:
         a = database_attrs("barge2", method)
         assert float(a["panel_size_m"]) == min(sizes)
     last = study["rows"][-1]["near_field"]
@@ -103,7 +103,7 @@ def test_drift_source_names_every_source_and_rejects_the_rest(tmp_path):
     with pytest.raises(ValueError, match="parameter 'method'"):
         database("barge2", "middle_field")
     # the study's models use the shipped near field by default and say so
-    m = jt.study.barge2_wave_model("2a")
+    m = jt.presets.barge2_wave_model("2a")
     assert m.external.qtf is database("barge2", "near_field")
 
 
@@ -146,7 +146,7 @@ def test_slow_drift_force_averages_to_the_mean_drift_and_varies():
 
     from jaxtow.forces import SlowDriftForce
 
-    m = jt.study.barge2_irregular_model("2a", hs=2.4, tp=7.0)
+    m = jt.presets.barge2_irregular_model("2a", hs=2.4, tp=7.0)
     f = m.external
     sd = SlowDriftForce.seeded(f.qtf, f.spectrum, f.scales, seed=3, n=200)
     y = jnp.array([1.0, 0.0, 0.0, 2.6, 0.0, 0.05])
@@ -244,7 +244,7 @@ def test_claim_time_domain_agrees_with_linear():
 
 
 def _with(name, value):
-    s = reports.WaveStudy(n=5)
+    s = studies.WaveStudy(n=5)
     object.__setattr__(s, name, value)
     return s
 
@@ -265,10 +265,10 @@ def test_claim_stationary_wave_share():
 
 def test_claim_sailing_wave_share():
     """The share claims accept the thesis's numbers within the stated tolerance only."""
-    assert _with("sailing_shares", dict(reports.THESIS_SAILING_SHARES)).claim("sailing_wave_share")[
+    assert _with("sailing_shares", dict(studies.THESIS_SAILING_SHARES)).claim("sailing_wave_share")[
         "reproduced"
     ]
-    off = {u: (w + 11.0, v - 11.0, c) for u, (w, v, c) in reports.THESIS_SAILING_SHARES.items()}
+    off = {u: (w + 11.0, v - 11.0, c) for u, (w, v, c) in studies.THESIS_SAILING_SHARES.items()}
     assert not _with("sailing_shares", off).claim("sailing_wave_share")["reproduced"]
 
 
@@ -372,7 +372,7 @@ def test_report_waves_writes_claims(tmp_path, capsys):
     claim under each source, the slowly varying drift runs, figures and datasets with their
     drift source and validity, and claim numbers equal to the maps'."""
     from jaxtow.cli import main
-    from jaxtow.reports import CLAIM_IDS, RESISTANCE_CLAIM_IDS
+    from jaxtow.studies import CLAIM_IDS, RESISTANCE_CLAIM_IDS
 
     main(
         [
@@ -408,7 +408,7 @@ def test_report_waves_writes_claims(tmp_path, capsys):
         assert "attribution" not in c  # --no-attribution (the attribution re-runs cost CI minutes)
     table = (tmp_path / "claims.md").read_text()
     assert "panel far field, aranha" in table
-    mp = jt.reports.straight(jt.io.load_dataset(tmp_path / "barge_2b_map_l0_omega.nc"))
+    mp = jt.studies.straight(jt.io.load_dataset(tmp_path / "barge_2b_map_l0_omega.nc"))
     c2b = [c for c in claims if c["id"] == "barge_2b_stays_stable"][0]
     assert c2b["measured"]["fraction_stable"] == pytest.approx(float(np.mean(mp < -TOL)))
     assert table.count("\n| ") >= len(ids)
@@ -435,7 +435,7 @@ def test_attribution_reruns_the_claim_and_gives_the_gradient_at_its_critical_poi
     claim re-run at both ends of the estimate's plausible range, and, for a stability-margin
     claim made to fail (its 2b map made unstable), ∂(max Re λ)/∂p at the point that decides
     it and the linear change of each p that would bring max Re λ to the stable side."""
-    s = reports.WaveStudy(n=3, n_grid=101, t1=30.0)
+    s = studies.WaveStudy(n=3, n_grid=101, t1=30.0)
     maps = dict(s.maps_l0_omega)
     bad = maps["2b"].copy(deep=True)
     mr = bad["max_real"].values
@@ -443,7 +443,7 @@ def test_attribution_reruns_the_claim_and_gives_the_gradient_at_its_critical_poi
     maps["2b"] = bad
     s.__dict__["maps_l0_omega"] = maps  # the cached map, replaced
     assert not s.claim("barge_2b_stays_stable")["reproduced"]
-    a = reports.attribute(s, "barge_2b_stays_stable", n=3, estimates=("EA",))
+    a = studies.attribute(s, "barge_2b_stays_stable", n=3, estimates=("EA",))
     assert a["reproduced_at_attribution_grid"]  # the real maps are stable
     assert set(a["estimates"]) == {"EA"}
     for end in ("low", "high"):
@@ -463,7 +463,7 @@ def test_attribution_reruns_the_claim_and_gives_the_gradient_at_its_critical_poi
         else:
             assert g["max_real"] + row["gradient"] * row["change_to_flip"] == pytest.approx(target)
     with pytest.raises(ValueError, match="parameter 'estimates'"):
-        reports.attribute(s, "barge_2b_stays_stable", n=3, estimates=("KG",))
+        studies.attribute(s, "barge_2b_stays_stable", n=3, estimates=("KG",))
 
 
 def test_committed_full_report_covers_every_source_form_and_attribution():
@@ -471,7 +471,7 @@ def test_committed_full_report_covers_every_source_form_and_attribution():
     the three sources and both forms, an attribution of every claim of the primary study
     that does not reproduce, and the docs show its table as it is (no stale docs)."""
     from jaxtow.cli.report import attribution_text, claims_markdown, claims_table
-    from jaxtow.reports import CLAIM_IDS, RESISTANCE_CLAIM_IDS
+    from jaxtow.studies import CLAIM_IDS, RESISTANCE_CLAIM_IDS
 
     data = DOCS.parent / "benchmarks" / "data" / "report_waves"
     claims = json.loads((data / "claims.json").read_text())

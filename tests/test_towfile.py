@@ -48,7 +48,7 @@ def test_builtin_tow_files_reproduce_the_presets(version):
         _leaves_equal(sea, jt.presets.sea_state(name))
         assert sea.name == name
     assert tow.route_length == pytest.approx(500 * 1852.0, rel=1e-15)
-    assert tow.drift()[0] is jt.drift.database("barge2", "near_field")
+    assert tow.drift()[0] is jt.presets.database("barge2", "near_field")
     old = jt.TowModel(vessel=vessel, towline=line)
     new = tow.model()
     e_old, e_new = jt.equilibria(old), jt.equilibria(new)
@@ -79,10 +79,10 @@ def test_builtin_tow_resistance_equals_the_resistance_config():
 def test_barge1_tow_is_the_drift_hull():
     tow = jt.tow.load("barge1")
     assert tow.vessel is None and tow.towline is None and tow.tug is None
-    wl, ref = tow.waterline, jt.drift.box_waterline()
+    wl, ref = tow.waterline, jt.presets.box_waterline()
     np.testing.assert_array_equal(np.asarray(wl.points), np.asarray(ref.points))
     assert float(wl.draft) == float(ref.draft)
-    assert tow.drift()[0] is jt.drift.database("barge1", "far_field")
+    assert tow.drift()[0] is jt.presets.database("barge1", "far_field")
     with pytest.raises(TowFileError, match="no manoeuvring model"):
         tow.model()
 
@@ -415,7 +415,7 @@ def test_study_builtin_and_render_in_chromium(name, tmp_path):
     assert s["calm"]["verdict"] == ("fishtails" if name == "barge2a" else "follows")
     assert set(s["sea_states"]) == {"survival", "sailing"}
     for rec in s["sea_states"].values():  # U = 2 m/s is above the orbital velocity of both
-        assert rec["verdict"] in jt.reports.VERDICTS
+        assert rec["verdict"] in jt.studies.VERDICTS
         assert "no_separation" in rec["outside_validity"]
         assert "OUTSIDE" in rec["verdict_text"]
     exe = _chromium()
@@ -477,7 +477,7 @@ def test_a_towline_with_weight_is_the_elastic_catenary():
     assert isinstance(tow.towline, jt.CatenaryTowline)
     _leaves_equal(tow.towline, ref)
     assert tow.water_depth == 80.0
-    from jaxtow.reports._tow import _catenary_record
+    from jaxtow.studies._assessment import _catenary_record
 
     rec = _catenary_record(tow.model(), tow.water_depth)
     assert rec["sag_m"] > 0 and rec["seabed_clear"] == (rec["sag_m"] < 80.0)
@@ -564,7 +564,7 @@ def test_towline_from_the_catalogue_and_a_composite_line():
     assert [s["length_m"] for s in tow.line_info] == [50.0, 550.0]
     shown = jt.tow.loads(jt.tow.show(tow), source="shown")
     _leaves_equal(shown.towline, tow.towline)
-    from jaxtow.reports._tow import _strength_record
+    from jaxtow.studies._assessment import _strength_record
 
     summary = {"calm": {"equilibria": [{"tension": 0.5, "valid": True}]}}
     rec = _strength_record(tow, tow.model(), summary)

@@ -7,7 +7,8 @@ import pytest
 
 import jaxtow as jt
 from jaxtow import resistance as R
-from jaxtow.study import approximate_qtf, nearest_straight
+from jaxtow.presets import approximate_qtf
+from jaxtow.studies import nearest_straight
 
 
 @pytest.fixture(scope="module")
@@ -16,7 +17,7 @@ def qtf():
 
 
 def test_qtf_from_method_reproduces_the_method_at_the_nodes(qtf):
-    wl = jt.drift.barge2_waterline()
+    wl = jt.presets.barge2_waterline()
     for w, b in ((0.5, 0.0), (1.3, math.radians(30.0)), (2.1, math.radians(-60.0))):
         ref = np.asarray(jt.drift.kashiwagi(wl, w, abs(b)).force)
         ref = ref * np.array([1.0, math.copysign(1.0, b), math.copysign(1.0, b)])
@@ -53,7 +54,7 @@ def test_wind_force_in_the_tow_model():
 
 
 def test_parameter_paths_into_the_force_model(qtf):
-    m = jt.study.barge2_wave_model("2a", omega=1.0, zeta_a=1.25, qtf=qtf)
+    m = jt.presets.barge2_wave_model("2a", omega=1.0, zeta_a=1.25, qtf=qtf)
     m2 = jt.with_parameters(m, **{"external.omega": 1.4, "external.zeta_a": 0.5, "l0": 1.0})
     assert float(jt.get_parameter(m2, "external.omega")) == 1.4 and float(m2.external.zeta_a) == 0.5
     assert float(m2.towline.l0) == 1.0

@@ -12,7 +12,7 @@ axes of jaxtow. Builders:
 * `box_barge_mesh`: Barge 1, the wall-sided 76.2 × 24.4 m box;
 * `raked_barge_mesh` / `barge2_mesh`: Barge 2, the same waterline with bow and stern faces
   raked from the waterline to the keel over a horizontal distance ``rake`` (the geometry of
-  `jaxtow.presets.barge2_rake` and `jaxtow.drift.barge2_waterline`);
+  `jaxtow.presets.barge2_rake` and `jaxtow.presets.barge2_waterline`);
 * `vertical_cylinder_mesh`: the reference case (bottom-mounted or truncated cylinder);
 * `jaxtow.bem.read_mesh` (needs Capytaine) reads user hulls in the formats Capytaine reads.
 

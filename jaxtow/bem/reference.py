@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy.special import h1vp
 
 from .._units import RHO_SEA, G
 
@@ -48,7 +49,6 @@ def wavenumber(omega, depth, g: float = G) -> float:
 
 
 def _series(ka, n_terms):
-    from scipy.special import h1vp
 
     m = np.arange(n_terms)
     eps = np.where(m == 0, 1.0, 2.0)

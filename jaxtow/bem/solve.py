@@ -31,12 +31,19 @@ import json
 import math
 from pathlib import Path
 
+import jax.numpy as jnp
 import numpy as np
+import xarray as xr
 
 from .. import presets
+from .._config import __version__
+from .._progress import progress_meter
 from .._units import RHO_SEA, G
+from ..drift._compare import relative_mse
+from ..drift._methods import ZONE_NAMES, zone
+from ..drift._qtf import QTF
 from ..io._atomic import save_netcdf
-from .meshes import HullMesh
+from .meshes import HullMesh, raked_barge_mesh
 from .nearfield import apply_gradient, near_field_drift, surface_gradient_operator
 
 INSTALL_HINT = (
@@ -588,7 +595,6 @@ def far_field_drift(
 
 
 def _frequency_dataset(r: dict):
-    import xarray as xr
 
     w = [r["omega"]]
     dims_b = ("omega", "beta")
@@ -624,7 +630,6 @@ def _frequency_dataset(r: dict):
 
 def _attrs(mesh, body, rho, g, water_depth, fixed, theta_step):
     cpt = require_capytaine()
-    import jaxtow
 
     return {
         "mesh_name": mesh.name,
@@ -634,7 +639,7 @@ def _attrs(mesh, body, rho, g, water_depth, fixed, theta_step):
         "panel_size_m": mesh.panel_size,
         "solver": "capytaine.BEMSolver(method='indirect'), Delhommeau Green function, lid for irregular frequencies",
         "capytaine_version": cpt.__version__,
-        "jaxtow_version": jaxtow.__version__,
+        "jaxtow_version": __version__,
         "rho": rho,
         "g": g,
         "water_depth": str(water_depth),
@@ -685,9 +690,6 @@ def bem_drift(
     is stored in its own NetCDF file named by a hash of every input, so a rerun (or an
     interrupted run) only solves what is missing. ``progress`` prints a bar on stderr.
     """
-    import xarray as xr
-
-    from .._progress import Progress
 
     omega = np.atleast_1d(np.asarray(omega, float))
     beta = np.atleast_1d(np.asarray(beta, float))
@@ -703,7 +705,7 @@ def bem_drift(
     cache = None if cache_dir is None else Path(cache_dir)
     if cache is not None:
         cache.mkdir(parents=True, exist_ok=True)
-    bar = Progress(omega.size, label=f"bem {mesh.name} ({mesh.n_panels} panels)", enabled=progress)
+    bar = progress_meter(progress).start(omega.size, f"bem {mesh.name} ({mesh.n_panels} panels)")
     parts = []
     prepared = None  # built on the first frequency that is not in the cache
     for w in np.sort(omega):
@@ -730,6 +732,7 @@ def bem_drift(
                 save_netcdf(ds, path)  # atomic: a killed solve leaves no partial cache file
         parts.append(ds)
         bar.update()
+    bar.close()
     out = xr.concat(
         parts,
         dim="omega",
@@ -761,7 +764,6 @@ def qtf_from_bem(ds, method: str = "far_field", *, symmetric: bool = False):
     following-sea) sway and yaw, which vanish by symmetry, to exactly zero. The sectional
     moments (M_x,1, M_y,1, M_y,2) of the pressure integration (``sectional_moments``) come
     with the table, for the yaw-rate wave-drift damping (`jaxtow.drift.yaw_rate_damping`)."""
-    from ..drift._qtf import QTF
 
     if method not in ("far_field", "near_field"):
         raise ValueError(f"parameter 'method' must be 'far_field' or 'near_field', got {method!r}")
@@ -801,11 +803,6 @@ def mesh_convergence(
     field. Returns (datasets by panel size, summary Dataset over panel_size with
     ``panels_per_length``, ``panels_per_breadth``, ``mse`` (panel_size, drift_method, component,
     zone) and ``near_vs_far`` (panel_size, component, zone))."""
-    import jax.numpy as jnp
-    import xarray as xr
-
-    from ..drift._compare import relative_mse
-    from ..drift._methods import ZONE_NAMES, zone
 
     sizes = sorted((float(p) for p in panel_sizes), reverse=True)
     runs = {p: bem_drift(build_mesh(p), omega, beta, **kwargs) for p in sizes}
@@ -888,7 +885,6 @@ def box_barge_drift(
     ``near_field`` jaxtow `QTF` (SI per ζa², β = 0 head seas; completed by symmetry when β
     starts at 0) and the full ``dataset``. ``cog_z`` is the CoG height above the keel [m];
     other keywords go to `bem_drift` (cache_dir, progress, radii, roll_damping, ...)."""
-    from .meshes import raked_barge_mesh
 
     mesh = raked_barge_mesh(
         length,

@@ -23,19 +23,19 @@ def _waterline(args):
     from .tow import load_tow
 
     if args.waterline:
-        return jt.drift.read_waterline(args.waterline, draft=args.draft or 5.0)
+        return jt.io.read_waterline(args.waterline, draft=args.draft or 5.0)
     name = _tow_names(args, "drift")[0]
     tow = load_tow(name, "drift")
     if args.draft is None:
         return tow.waterline
     spec = tow.resolved["hull"]["waterline"]
     if spec == "box":
-        return jt.drift.box_waterline(
+        return jt.presets.box_waterline(
             tow.scales.length, tow.resolved["vessel"]["breadth"], args.draft
         )
     if spec == "barge2":
-        return jt.drift.barge2_waterline(draft=args.draft)
-    return jt.drift.read_waterline(spec, draft=args.draft)
+        return jt.presets.barge2_waterline(draft=args.draft)
+    return jt.io.read_waterline(spec, draft=args.draft)
 
 
 def _zone_mse(ds, component, base):
@@ -217,7 +217,7 @@ def add_parser(sub):
     d = sub.add_parser("drift", help="compare the waterline drift methods (thesis chapters 4-5)")
     _tow_option(d, default=("barge1",))
     d.add_argument(
-        "--waterline", help="half-waterline text file instead (see jaxtow.drift.read_waterline)"
+        "--waterline", help="half-waterline text file instead (see jaxtow.io.read_waterline)"
     )
     d.add_argument(
         "--draft",

@@ -3,7 +3,7 @@ chapters 6.2-6.3 and 7): stability and equilibrium maps, time-domain runs (with 
 varying drift), ``claims.json`` / ``claims.md`` checking every thesis claim under each drift
 source (the shipped panel near field, its far field, the stand-in) and each sailing-drift
 form, and the attribution of every claim of the primary source and form that does not
-reproduce (`jaxtow.reports.WaveStudy`, `jaxtow.reports.attribute`)."""
+reproduce (`jaxtow.studies.WaveStudy`, `jaxtow.studies.attribute`)."""
 
 from __future__ import annotations
 
@@ -17,7 +17,7 @@ from ..io._atomic import write_file
 
 
 def _straight(ds, field="max_real"):
-    from .. import reports as W
+    from .. import studies as W
 
     return W.straight(ds, field)
 
@@ -58,7 +58,7 @@ def _figures(study, out: Path, summary: dict, progress: bool) -> None:
         plot_runs,
         plot_with_without,
     )
-    from ..study import valid_count
+    from ..studies import valid_count
 
     src, za, ax = study.source, study.zeta_a, study.axes
     l0, omega, tps = ax["l0"], ax["omega"], ax["tp"]
@@ -264,7 +264,7 @@ def _brief(measured, limit: int = 4) -> str:
 
 
 def attribution_text(claims: list) -> str:
-    """The attribution of each claim that carries one (`jaxtow.reports.attribute`), as
+    """The attribution of each claim that carries one (`jaxtow.studies.attribute`), as
     markdown: the claim re-run at both ends of each estimate's plausible range, the panel
     variants, the gradient at the deciding point and what flips it."""
     out = []
@@ -346,7 +346,7 @@ def claims_markdown(claims: list, sources: dict) -> str:
 
 def file_options(pairs) -> dict:
     """``--qtf-option KEY=VALUE`` pairs as reader options (numbers, ``x,y`` pairs, words)."""
-    from ..drift._database import FILE_OPTIONS
+    from ..presets import FILE_OPTIONS
 
     out: dict = {}
     for pair in pairs:
@@ -390,8 +390,8 @@ def plan(args):
 
 
 def cmd_report(args):
-    from .. import presets, reports as W
-    from ..drift._database import drift_source
+    from .. import presets, studies as W
+    from ..presets import drift_source
 
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)

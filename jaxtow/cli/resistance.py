@@ -80,7 +80,7 @@ def build(cfg: dict):
     if isinstance(drift, str) and drift in METHODS:
         kw["method"] = drift
     else:
-        from ..drift._database import drift_source
+        from ..presets import drift_source
 
         kw["qtf"], kw["drift_source"] = drift_source(drift)
         kw["form"] = tow_c.get("sailing_form", "aranha")
@@ -132,7 +132,7 @@ def format_table(rows: list, tug, route_length) -> str:
         f"top speed {float(tug.max_speed):g} m/s"
         + (f"; route {route_length / NM:g} nm" if route_length else "")
     )
-    from ..reports._resistance import resistance_table
+    from ..studies import resistance_table
 
     cols, body = resistance_table(rows)
     table = [list(cols), *body]
@@ -201,7 +201,7 @@ def cmd_resistance(args):
     from ..io import resistance_dataset, save_dataset
     from ..plotting.calm import save
     from ..plotting.resistance import plot_budget_vs_speed, plot_budget_vs_tp, plot_operating_point
-    from ..reports._resistance import evaluate
+    from ..studies import evaluate_resistance as evaluate
     from ..waves import physical_tp_range
 
     tow, tug, seas, heading, route = inputs(args.config)

@@ -16,7 +16,8 @@ def cmd_study(args):
 
     from ..io import save_dataset
     from ..plotting.tow import png_bytes, study_figures
-    from ..reports import tow_report_html, tow_study
+    from ..reports import tow_report_html
+    from ..studies import tow_study
 
     tow = load_tow(args.tow, "study")
     out = Path(args.out)

@@ -1,5 +1,5 @@
-"""Wave drift: QTF databases (the shipped panel-method ones: `database`), wave-drift damping, sailing drift, and the short-wave / empirical
-methods from the waterline. The tow-model wave forces built on them are in `jaxtow.forces`."""
+"""Wave drift: QTF tables, wave-drift damping, sailing drift, and the short-wave / empirical
+methods from the waterline (the shipped panel-method databases are in `jaxtow.presets`). The tow-model wave forces built on them are in `jaxtow.forces`."""
 
 from ._compare import (
     compare_methods as compare_methods,
@@ -15,17 +15,6 @@ from ._damping import (
     sailing_validity as sailing_validity,
     wave_drift_damping as wave_drift_damping,
     yaw_rate_damping as yaw_rate_damping,
-)
-from ._database import (
-    DATABASE_METHODS as DATABASE_METHODS,
-    DATABASES as DATABASES,
-    DEFAULT_METHOD as DEFAULT_METHOD,
-    STANDIN as STANDIN,
-    database as database,
-    database_attrs as database_attrs,
-    database_file as database_file,
-    describe_database as describe_database,
-    drift_source as drift_source,
 )
 from ._methods import (
     FROUDE_MAX as FROUDE_MAX,
@@ -57,12 +46,8 @@ from ._sailing import (
 )
 from ._waterline import (
     Waterline as Waterline,
-    barge2_waterline as barge2_waterline,
-    box_waterline as box_waterline,
     mirror_half as mirror_half,
-    read_waterline as read_waterline,
     waterline as waterline,
-    write_waterline as write_waterline,
 )
 
 __all__ = [
@@ -71,15 +56,6 @@ __all__ = [
     "qtf_from_method",
     "relative_mse",
     "relative_mse_by_zone",
-    "DATABASE_METHODS",
-    "DATABASES",
-    "DEFAULT_METHOD",
-    "STANDIN",
-    "database",
-    "database_attrs",
-    "database_file",
-    "describe_database",
-    "drift_source",
     "TAU_MAX",
     "aranha",
     "sailing_validity",
@@ -109,10 +85,6 @@ __all__ = [
     "irregular_sailing_drift",
     "sailing_drift",
     "Waterline",
-    "barge2_waterline",
-    "box_waterline",
     "mirror_half",
-    "read_waterline",
     "waterline",
-    "write_waterline",
 ]

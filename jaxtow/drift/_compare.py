@@ -20,6 +20,7 @@ import numpy as np
 from .._rules import guard
 from ..waves import DEFAULT_OMEGA, Jonswap, mean_drift
 from ._methods import METHODS, ZONE_EDGES, ZONE_NAMES, zone
+from ._qtf import QTF
 
 
 def relative_mse(estimate, base, mask=None) -> float:
@@ -91,9 +92,6 @@ def qtf_from_method(method, wl, omega, beta, **kwargs):
     stand-in for a panel-method QTF in the tow model (the waterline methods miss the
     motion-induced drift in the motion zone); the forward-speed effect then comes from the
     encounter frequency and Aranha's wave-drift damping of the QTF."""
-    import numpy as np
-
-    from ._qtf import QTF
 
     fn = METHODS[method] if isinstance(method, str) else method
     w = jnp.asarray(omega, float)

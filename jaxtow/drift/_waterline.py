@@ -16,21 +16,20 @@ Geometry used by the methods, all differentiable in the coordinates:
   segment is lit where k̂·n > 0. For a convex waterline this is exact; shadowing of one part
   of a non-convex waterline by another is not modelled, and ``convex`` says so.
 
-Builders: `box_waterline` (Barge 1) and `barge2_waterline` (Barge 2, plan-rectangular with
-raked bow and stern faces, geometry in `jaxtow.presets.barge2_rake`); `read_waterline` reads
-the thesis's half-waterline text format and mirrors it about the centreline.
+Builders of the built-in hulls' waterlines are in `jaxtow.presets` (`box_waterline`,
+`barge2_waterline`); `jaxtow.io.read_waterline` reads the thesis's half-waterline text format
+and mirrors it about the centreline (`mirror_half`).
 """
 
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import equinox as eqx
 import jax.numpy as jnp
 import numpy as np
 
-from .. import _rules as V, presets
+from .. import _rules as V
 
 _TOL = 1e-9
 
@@ -251,84 +250,3 @@ def mirror_half(half, flare=0.0, local_draft=None):
         ld = np.broadcast_to(np.asarray(local_draft, float), (m,))
         ld = np.concatenate([ld, ld[::-1]])
     return pts, fl, ld
-
-
-def read_waterline(
-    path, *, draft: float, block_coefficient=None, name: str | None = None
-) -> Waterline:
-    """Read half a waterline from a text file and mirror it about the centreline (the thesis's
-    input format, appendix C.1).
-
-    One vertex per line, whitespace separated: ``x y [flare_deg [local_draft]]`` [m, m, °, m],
-    from the bow on the centreline along one side to the stern on the centreline; the flare
-    and local draft belong to the segment that starts at that vertex (ignored on the last
-    line). ``#`` starts a comment.
-    """
-    rows = []
-    for line in Path(path).read_text().splitlines():
-        line = line.split("#", 1)[0].strip()
-        if line:
-            rows.append([float(v) for v in line.split()])
-    if len(rows) < 2:
-        raise ValueError(f"waterline file {path}: needs at least two vertices")
-    width = max(len(r) for r in rows)
-    if min(len(r) for r in rows[:-1]) < width or width not in (2, 3, 4):
-        raise ValueError(
-            f"waterline file {path}: every line needs the same columns: x y [flare_deg [local_draft]]"
-        )
-    a = np.array([r + [np.nan] * (width - len(r)) for r in rows])
-    flare = np.radians(a[:-1, 2]) if width >= 3 else 0.0
-    local = a[:-1, 3] if width == 4 else None
-    pts, fl, ld = mirror_half(a[:, :2], flare, local)
-    return waterline(
-        pts,
-        draft=draft,
-        flare=fl,
-        local_draft=ld,
-        block_coefficient=block_coefficient,
-        name=name or Path(path).stem,
-    )
-
-
-def write_waterline(path, wl: Waterline) -> None:
-    """Write the port half (y ≥ 0) of a symmetric waterline in `read_waterline`'s format."""
-    p = np.asarray(wl.points)
-    fl, ld = np.degrees(np.asarray(wl.flare)), np.asarray(wl.local_draft)
-    n = p.shape[0]
-    i0 = int(np.argmax(np.where(np.abs(p[:, 1]) < _TOL * 1e3, p[:, 0], -np.inf)))
-    lines = ["# x [m]  y [m]  flare [deg]  local_draft [m]  (half waterline, bow to stern)"]
-    i = i0
-    while True:
-        lines.append(f"{p[i, 0]:.12g} {p[i, 1]:.12g} {fl[i]:.12g} {ld[i]:.12g}")
-        i = (i + 1) % n
-        if abs(p[i, 1]) < _TOL * 1e3 and i != i0:
-            lines.append(f"{p[i, 0]:.12g} {p[i, 1]:.12g}")
-            break
-    Path(path).write_text("\n".join(lines) + "\n")
-
-
-def box_waterline(
-    length: float = 76.2, breadth: float = 24.4, draft: float | None = None
-) -> Waterline:
-    """Rectangular wall-sided waterline (Barge 1: L = 76.2 m, B = 24.4 m), centred on
-    midships. The draft defaults to the documented Barge 2 estimate (5.0 m,
-    `jaxtow.presets.ASSUMPTIONS`); the thesis text does not give Barge 1's."""
-    T = presets.ASSUMPTIONS["draft"]["value"] if draft is None else draft
-    a, b = 0.5 * length, 0.5 * breadth
-    half = [(a, 0.0), (a, b), (-a, b), (-a, 0.0)]
-    pts, fl, _ = mirror_half(half)
-    return waterline(pts, draft=T, flare=fl, block_coefficient=1.0, name="box")
-
-
-def barge2_waterline(draft: float | None = None) -> Waterline:
-    """Barge 2 (76.2 m × 24.4 m): plan-rectangular waterline whose bow and stern faces are
-    raked, flare η = 47.7° (`jaxtow.presets.barge2_rake`, a documented estimate). The local
-    draft of the raked faces is the full draft T (the section behind the rake); Liu et al.'s
-    effective draft there is then min(T cos η, T) = T cos η."""
-    r = presets.barge2_rake(draft)
-    a, b = 0.5 * presets.BARGE2_LENGTH, 0.5 * presets.BARGE2_BREADTH
-    half = [(a, 0.0), (a, b), (-a, b), (-a, 0.0)]
-    pts, fl, _ = mirror_half(half, flare=[r["flare"], 0.0, r["flare"]])
-    return waterline(
-        pts, draft=r["draft"], flare=fl, block_coefficient=r["block_coefficient"], name="barge2"
-    )

@@ -5,7 +5,9 @@ from __future__ import annotations
 import dataclasses
 
 import equinox as eqx
+import jax
 import jax.numpy as jnp
+import numpy as np
 from jaxtyping import Array, Float
 
 from .. import _rules as V
@@ -13,9 +15,10 @@ from .._interp import cell_index
 from .._units import G, Scales
 from ..drift._damping import encounter_frequency, sailing_validity
 from ..drift._methods import FROUDE_MAX
-from ..drift._qtf import QTF
+from ..drift._qtf import QTF, FullQTF
 from ..drift._sailing import check_form, irregular_sailing_drift, sailing_drift
 from ..waves import AbstractSpectrum, spectral_integral
+from ..waves._spectra import check_ascending
 from ._base import AbstractExternalForce
 
 
@@ -102,7 +105,6 @@ class IrregularWaveDriftForce(AbstractExternalForce):
         check_form(self.form)
         V.check_type("qtf", self.qtf, QTF)
         V.check_type("scales", self.scales, Scales)
-        from ..waves._spectra import check_ascending
 
         check_ascending(self.omega)
 
@@ -214,7 +216,6 @@ class SlowDriftForce(AbstractExternalForce):
     ) -> SlowDriftForce:
         """Components from ``seed``: ``n`` bins over ``omega_range`` [rad/s]; ``full_qtf``
         (a `jaxtow.drift.FullQTF`) replaces Newman's off-diagonal terms by the full QTF's."""
-        import numpy as np
 
         if not (isinstance(n, int) and n >= 2):
             raise ValueError(f"parameter 'n' must be an integer >= 2, got {n!r}")
@@ -228,8 +229,6 @@ class SlowDriftForce(AbstractExternalForce):
         w = edges[:-1] + rng.uniform(size=n) * np.diff(edges)
         off = off_b = share = None
         if full_qtf is not None:
-            from ..drift._qtf import FullQTF
-
             if not isinstance(full_qtf, FullQTF):
                 raise TypeError(
                     f"parameter 'full_qtf' must be a jaxtow.drift.FullQTF, got {type(full_qtf).__name__}"
@@ -264,7 +263,6 @@ class SlowDriftForce(AbstractExternalForce):
 
     def dimensional(self, t, y):
         """(Fx [N], Fy [N], Nz [N·m]) at non-dimensional time t and state y."""
-        import jax
 
         U, L = self.scales.u_tug, self.scales.length
         u, v, r, psi = y[0] * U, y[1] * U, y[2] * U / L, y[5]

@@ -7,6 +7,7 @@ from .._lazy import attach as _attach
 # loaded on first use (`jaxtow._lazy`): the command line's file helpers in `jaxtow.io._atomic`
 # do not load xarray
 if TYPE_CHECKING:
+    from .checkpoint import Checkpoint as Checkpoint
     from .dataset import (
         load_dataset as load_dataset,
         nan_audit as nan_audit,
@@ -32,8 +33,12 @@ if TYPE_CHECKING:
         write_wamit_drift as write_wamit_drift,
         write_wamit_qtf as write_wamit_qtf,
     )
+    from .waterline import read_waterline as read_waterline, write_waterline as write_waterline
 
 __all__ = [
+    "Checkpoint",
+    "read_waterline",
+    "write_waterline",
     "load_dataset",
     "nan_audit",
     "save_dataset",

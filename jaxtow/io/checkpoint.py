@@ -1,5 +1,6 @@
 """Chunk checkpoints of a sweep: each finished chunk is written to a folder as it completes,
-so an interrupted sweep resumes where it stopped (`jaxtow.sweep(..., checkpoint=DIR)`).
+so an interrupted sweep resumes where it stopped (`jaxtow.sweep(..., checkpoint=DIR)`, or
+`jaxtow.sweep_arrays(..., checkpoint=Checkpoint(DIR))`).
 
 The folder holds ``manifest.json`` (a fingerprint of the model, the grid, the chunking and
 the options) and one ``chunk_NNNNN.npz`` a chunk, each written atomically (a temporary name
@@ -69,3 +70,14 @@ class ChunkStore:
     def put(self, c: int, arrays: dict) -> None:
         with atomic_path(self._path(c)) as tmp, open(tmp, "wb") as f:
             np.savez(f, **arrays)
+
+
+class Checkpoint:
+    """A checkpoint folder for `jaxtow.sweep_arrays` (its ``checkpoint=``): the sweep opens it
+    with what its results depend on and gets the `ChunkStore` of that sweep."""
+
+    def __init__(self, folder):
+        self.folder = folder
+
+    def open(self, model, names, axes, chunk: int, options: dict, nchunks: int) -> ChunkStore:
+        return ChunkStore(self.folder, fingerprint(model, names, axes, chunk, options), nchunks)

@@ -8,8 +8,10 @@ import json
 import numpy as np
 import xarray as xr
 
+from .._config import __version__
 from .._parameters import describe
 from .._vessel import VESSEL_PARAMETERS
+from ._atomic import atomic_path
 
 #: name → (units, long_name) of the sweep outputs.
 VARIABLES = {
@@ -66,7 +68,6 @@ _FLOAT_MASKED = (
 
 def model_attributes(model) -> dict:
     """Provenance attributes: every fixed parameter value and the documented estimates."""
-    from .. import __version__
 
     attrs = {
         "jaxtow_version": __version__,
@@ -164,7 +165,6 @@ def save_dataset(ds: xr.Dataset, path) -> None:
 
     Atomic: the file is written beside ``path`` under a temporary name and renamed into
     place, so an interrupted write never leaves a partial file under the final name."""
-    from ._atomic import atomic_path
 
     ds = ds.copy()
     for k, v in ds.data_vars.items():

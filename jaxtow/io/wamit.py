@@ -46,6 +46,7 @@ import re
 from pathlib import Path
 
 import numpy as np
+import xarray as xr
 
 from .._units import RHO_SEA, G
 from ..drift._qtf import QTF, SYMMETRY_TOL, FullQTF, symmetry_residual
@@ -492,7 +493,6 @@ SECTIONAL_VARIABLES = (
 def qtf_to_dataset(q: QTF, attrs: dict | None = None):
     """A `QTF` as an xarray Dataset with units (jaxtow's own NetCDF format); ``attrs``
     (provenance: mesh, solver, versions) are stored with it."""
-    import xarray as xr
 
     ds = xr.Dataset(
         {
@@ -570,7 +570,6 @@ def load_qtf(path) -> QTF:
         v = np.zeros((3, ws.size, bs.size))
         v[:, i, j] = t[:, 2:].T
         return QTF(omega=ws, beta=bs, fx=v[0], fy=v[1], nz=v[2])
-    import xarray as xr
 
     ds = xr.load_dataset(path)
     names = [n for n, _, _ in SECTIONAL_VARIABLES]
@@ -591,7 +590,6 @@ _CAPY_VARIABLES = ("drift_force_surge", "drift_force_sway", "drift_force_yaw")
 
 def _capytaine_values(name, da):
     """(omega, wave_direction) real values of one Capytaine drift DataArray."""
-    import xarray as xr
 
     if "complex" in da.dims:  # stored as Capytaine saves complex values: a re/im axis
         labels = [str(v) for v in da["complex"].values] if "complex" in da.coords else []
@@ -652,7 +650,6 @@ def qtf_from_capytaine(
     β_jaxtow = wave_direction − π. ``reference_point`` (x, y) [m] moves the yaw moment from
     the origin of the result to that point; ``symmetry`` as in `complete_table`, the yaw
     scale ``length`` [m]."""
-    import xarray as xr
 
     if isinstance(fx, xr.Dataset):
         ds = fx
@@ -690,7 +687,6 @@ def qtf_from_capytaine(
 def read_capytaine_drift(path, **options) -> QTF:
     """A Capytaine drift result saved as NetCDF (complex values on a ``complex`` (re, im)
     axis, as Capytaine writes them); the options of `qtf_from_capytaine`."""
-    import xarray as xr
 
     path = Path(path)
     ds = xr.load_dataset(path)
@@ -713,8 +709,6 @@ def read_qtf(path, **options):
             )
         return load_qtf(path), dict(file=str(path), format="jaxtow CSV")
     if path.suffix == ".nc":
-        import xarray as xr
-
         with xr.open_dataset(path) as ds:
             own = "jaxtow_qtf" in ds.attrs
         if own:

@@ -8,6 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .._units import RHO_SEA, G
+from ..bem.solve import rao
 
 _LABELS = {
     "fx": "Fx / (rho g zeta_a^2 B)",
@@ -30,7 +31,6 @@ def _norm(ds, component):
 def plot_rao(ds, beta_deg: float = 0.0, dofs=("Heave", "Roll", "Pitch")):
     """Amplitude and phase of the RAOs at one heading (thesis figs B.2, B.3): translations in
     m/m, rotations in deg/m."""
-    from ..bem.solve import rao
 
     b = float(np.radians(beta_deg))
     X = rao(ds).sel(beta=b, method="nearest")

@@ -6,6 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from ..io._atomic import save_figure
+from .waves_report import hatch_invalid
 
 BRANCH_STYLE = {
     -1: ("psi < 0 side", "tab:orange"),
@@ -79,8 +80,6 @@ def plot_stability_map(ds, x: str, y: str, branch: int = 0, ax=None, title: str 
         ax.contour(ds[x].values, ds[y].values, mr, levels=[0.0], colors="k", linewidths=1)
     plt.colorbar(pc, ax=ax, label="max Re(lambda) [-]")
     if "physics_valid" in ds:
-        from .waves_report import hatch_invalid
-
         bad = (on & ~ds["physics_valid"].astype(bool)).any("equilibrium")
         hatch_invalid(ax, ds[x].values, ds[y].values, bad.transpose(x, y).values)
     ax.set_xlabel(f"{x}' [-]")

@@ -14,7 +14,7 @@ from .timedomain import plot_time_traces
 
 
 def study_figures(study) -> dict:
-    """name → matplotlib Figure for a `jaxtow.reports.TowStudy` (the report's order)."""
+    """name → matplotlib Figure for a `jaxtow.studies.TowStudy` (the report's order)."""
     s, figs = study.summary, {}
     w, fx = study.drift_curves["head_sea_fx"]
     fig, ax = plt.subplots(figsize=(6.5, 4))

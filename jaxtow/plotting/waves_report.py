@@ -5,6 +5,8 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
+from .._metrics import trajectory
+
 
 def _note(ax, note):
     if note:
@@ -84,7 +86,6 @@ def plot_heading_map(x, omega, psi, xlabel, *, ylabel="omega [rad/s]", title="",
 
 def plot_runs(runs: dict, title=""):
     """Sway offset and heading of several runs (thesis figs 6.20-6.22, 7.5)."""
-    from .._metrics import trajectory
 
     fig, axes = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
     for tag, (model, sim) in runs.items():

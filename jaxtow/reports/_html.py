@@ -9,6 +9,9 @@ import base64
 import datetime
 import html
 
+from ..studies._assessment import VALIDITY_WORDS as plain
+from ..studies._resistance import resistance_table
+
 __all__ = ["SECTIONS", "tow_report_html"]
 
 #: Section ids of the report, in order (the tests check each is present).
@@ -76,7 +79,7 @@ def _fmt(x, f="{:.3g}"):
 
 
 def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
-    """The report's HTML text from a `jaxtow.reports.TowStudy` summary and PNG figures
+    """The report's HTML text from a `jaxtow.studies.TowStudy` summary and PNG figures
     (name → bytes, from `jaxtow.plotting.tow.study_figures`)."""
     s = summary
     parts = [
@@ -180,8 +183,6 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
     # ------------------------------------------------------------------ resistance
     parts.append('<section id="resistance"><h2>Resistance, bollard pull and speed</h2>')
     if "resistance" in s:
-        from ._resistance import resistance_table
-
         head, rows = resistance_table(s["resistance"])
         parts.append(_table(head, rows))
         parts.append(
@@ -297,7 +298,6 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
     parts.append("</section>")
     # ------------------------------------------------------------------ validity
     parts.append('<section id="validity"><h2>Validity warnings</h2><ul>')
-    from ._tow import VALIDITY_WORDS as plain
 
     n = 0
     for label, rec in conds:

@@ -52,6 +52,7 @@ from ._budget import (
     required_pull as required_pull,
     resistance as resistance,
     resistance_grid as resistance_grid,
+    tow_resistance as tow_resistance,
 )
 from ._flow import (
     RHO_AIR as RHO_AIR,
@@ -74,6 +75,7 @@ __all__ = [
     "Budget",
     "PullRequirement",
     "TowResistance",
+    "tow_resistance",
     "WaveDrift",
     "required_pull",
     "resistance",

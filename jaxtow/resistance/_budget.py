@@ -8,7 +8,8 @@ import jax.numpy as jnp
 import numpy as np
 
 from .._rules import NONNEGATIVE, POSITIVE, guard, is_concrete
-from .._units import froude_number
+from .._units import RHO_SEA, froude_number
+from .._vessel import Vessel
 from ..drift import (
     METHODS,
     QTF,
@@ -20,7 +21,7 @@ from ..drift._compare import method_mean_drift
 from ..drift._sailing import check_form
 from ..waves import DEFAULT_OMEGA, spectral_integral
 from ..waves._spectra import _jonswap
-from ._flow import OCIMFLoad
+from ._flow import RHO_AIR, CoefficientTable, ManoeuvringCoefficients, OCIMFLoad
 from ._sea import SeaState
 from ._tug import Tug
 
@@ -121,6 +122,27 @@ class TowResistance(eqx.Module):
             else self.waves(sea.hs, sea.tp, sea.gamma, sea.wave_angle - heading, u, v)
         )
         return jnp.stack([hull, wind, waves])
+
+
+def tow_resistance(
+    vessel: Vessel,
+    length: float,
+    breadth: float,
+    draft: float,
+    waves,
+    *,
+    wind_table: CoefficientTable,
+    wind_height: float,
+    name: str = "tow",
+    assumed: tuple = (),
+) -> TowResistance:
+    """The `jaxtow.resistance.TowResistance` of any vessel: the current/calm-water load from
+    its manoeuvring derivatives (fig. 7.1b) on L, B, T [m], the OCIMF wind load of
+    ``wind_table`` on the windage height [m], and ``waves`` (a `WaveDrift`)."""
+    L, B = float(length), float(breadth)
+    hull = OCIMFLoad(ManoeuvringCoefficients(vessel, L, B), RHO_SEA, L, B, float(draft))
+    wind = OCIMFLoad(wind_table, RHO_AIR, L, B, float(wind_height))
+    return TowResistance(hull=hull, wind=wind, waves=waves, name=name, assumed=tuple(assumed))
 
 
 class Budget(eqx.Module):

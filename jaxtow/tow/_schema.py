@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import re
+import warnings
 from dataclasses import dataclass, field
 from typing import NoReturn
 
@@ -93,7 +94,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
         waterline=Key(
             "str",
             "waterline for the waterline drift methods: box (L x B rectangle) | barge2 "
-            "(the raked Barge 2) | a half-waterline file (jaxtow.drift.read_waterline)",
+            "(the raked Barge 2) | a half-waterline file (jaxtow.io.read_waterline)",
         ),
         drift=Key(
             "table",
@@ -385,7 +386,6 @@ class Problems:
         raise TowFileError(message, source=self.source, line=locate(self.text, path), key=key)
 
     def warn(self, path: tuple, message: str):
-        import warnings
 
         key = ".".join(str(p) if not isinstance(p, int) else f"[{p + 1}]" for p in path)
         key = key.replace(".[", "[")

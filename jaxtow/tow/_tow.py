@@ -4,17 +4,46 @@ objects of the model (vessel, towline, scales, drift source, tug, sea states).""
 from __future__ import annotations
 
 import math
+import re
 import tomllib
+import warnings
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+import numpy as np
+
+from .. import bem, lines, presets
+from .._dynamics import TowModel
+from .._towline import Bridle, CatenaryTowline, Towline
+from .._units import Scales
+from .._vessel import Vessel
+from ..drift import METHODS
+from ..drift._compare import qtf_from_method
+from ..forces import CombinedForce
+from ..forces._waves import IrregularWaveDriftForce
+from ..forces._wind import WindForce
+from ..io import read_waterline
+from ..io.resistance import read_coefficient_table
+from ..presets import (
+    DATABASE_METHODS,
+    DATABASES,
+    QTF_BETA_DEG,
+    QTF_OMEGA,
+    STANDIN,
+    barge2_waterline,
+    box_waterline,
+    drift_source,
+)
+from ..resistance import SeaState, Tug, WaveDrift, tow_resistance
+from ..waves import DEFAULT_OMEGA, Jonswap, physical_tp_range
 from ._schema import (
     ARRAYS,
     REQUIRED,
     SCHEMA,
     Invalid,
+    Key,
     Problems,
     TowFileError,
     check_value,
@@ -115,7 +144,6 @@ class Tow:
     def model(self, external=None):
         """The `jaxtow.TowModel` of the tow (calm water unless ``external`` is given), with
         its scales (so ``u_tug`` can be swept)."""
-        from .._dynamics import TowModel
 
         self._need_model()
         ext = {} if external is None else dict(external=external)
@@ -124,16 +152,10 @@ class Tow:
     def drift(self):
         """(QTF, description) of the tow's wave-drift source (cached)."""
         if "drift" not in self._cache:
-            from ..drift import METHODS
-            from ..drift._database import drift_source
-
             spec = self.drift_spec
             if isinstance(spec, dict) and "mesh" in spec:
                 self._cache["drift"] = _mesh_drift(spec, self.resolved["hull"]["sailing_form"])
             elif isinstance(spec, str) and spec in METHODS:
-                from ..drift._compare import qtf_from_method
-                from ..study import QTF_BETA_DEG, QTF_OMEGA
-
                 q = qtf_from_method(spec, self.waterline, QTF_OMEGA, _radians(QTF_BETA_DEG))
                 desc = (
                     f"waterline method {spec!r} on the {self.waterline.name} waterline "
@@ -147,9 +169,6 @@ class Tow:
     def resistance(self):
         """The `jaxtow.resistance.TowResistance` of the tow (current from the manoeuvring
         derivatives, wind from the wind table, mean drift from the drift source)."""
-        from .. import presets
-        from ..drift import METHODS
-        from ..resistance import WaveDrift
 
         self._need_model()
         sc = self.scales
@@ -157,7 +176,7 @@ class Tow:
             waves = WaveDrift(self.waterline, method=self.drift_spec)
         else:
             waves = WaveDrift(qtf=self.drift()[0], form=self.form)
-        return presets.resistance_model(
+        return tow_resistance(
             self.vessel,
             sc.length,
             float(self.resolved["vessel"]["breadth"]),
@@ -173,10 +192,6 @@ class Tow:
         """The tow model in sea state ``sea``: mean irregular-sea drift (JONSWAP Hs, Tp, γ)
         and the wind, both from ahead of the course (the model's head-sea convention); the
         directions of ``sea`` enter the resistance budget only."""
-        from ..forces import CombinedForce
-        from ..forces._waves import IrregularWaveDriftForce
-        from ..forces._wind import WindForce
-        from ..waves import DEFAULT_OMEGA, Jonswap
 
         self._need_model()
         forces = []
@@ -203,7 +218,6 @@ class Tow:
 
 
 def _radians(x):
-    import numpy as np
 
     return np.radians(x)
 
@@ -214,7 +228,6 @@ def _radians(x):
 def load(spec) -> Tow:
     """A `Tow` from a built-in name (`BUILTIN_TOWS`; old spellings with a deprecation
     warning), a tow-file path, or an already parsed dict."""
-    import warnings
 
     if isinstance(spec, dict):
         return _build(spec, "", "<dict>")
@@ -243,7 +256,6 @@ def loads(text: str, source: str = "<string>", base=None) -> Tow:
 
 
 def _line_of(message: str):
-    import re
 
     m = re.search(r"line (\d+)", message)
     return int(m.group(1)) if m else None
@@ -271,10 +283,6 @@ def _check_section(p: Problems, name: str, table, index=None) -> dict:
 
 
 def _build(data: dict, text: str, source: str, base=None) -> Tow:
-    from .. import presets
-    from .._towline import Bridle, CatenaryTowline, Towline
-    from .._units import Scales
-    from .._vessel import Vessel
 
     p = Problems(text, source)
     for k in data:
@@ -397,11 +405,9 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
 
     # ---------------------------------------------------------------- hull
     h = sec["hull"]
-    from ..drift import METHODS
 
     wl_spec = h.get("waterline", "barge2" if "preset" in v else "box")
     h["waterline"] = wl_spec
-    from ..drift._waterline import barge2_waterline, box_waterline, read_waterline
 
     if wl_spec == "box":
         waterline = box_waterline(L, B, T)
@@ -439,9 +445,6 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
             p.error(("hull", "drift"), "a drift-file table needs file = PATH")
         drift = dict(drift, file=str(_path(drift["file"], base)))
     elif isinstance(drift, str) and drift not in METHODS:
-        from ..drift import DATABASE_METHODS, DATABASES
-        from ..drift._database import STANDIN
-
         hull_name, _, method = drift.rpartition(":")
         known = drift == STANDIN or (hull_name in DATABASES and method in DATABASE_METHODS)
         if not known:
@@ -466,8 +469,6 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
         wind_table = presets.barge2_wind_table()
         assumed.append(("wind_table", presets.ASSUMPTIONS["wind_table"]["note"]))
     else:
-        from ..io.resistance import read_coefficient_table
-
         try:
             wind_table = read_coefficient_table(_path(h["wind_table"], base))
         except ValueError as e:
@@ -526,8 +527,6 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
         segs = _segments(p, t["segments"]) if "segments" in t else None
         try:
             if segs is not None:
-                from .. import lines
-
                 towline = lines.composite(segs, scales=scales, xp=xp, yp=yp)
                 line_info = [_line_record(lt, length) for lt, length in segs]
                 assumed.append(("towline", "; ".join(f"{lt.name}: {lt.source}" for lt, _ in segs)))
@@ -557,8 +556,6 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
     tug = None
     g = sec["tug"]
     if any(k in g for k in ("bollard_pull_t", "free_speed", "speeds", "pulls_t")):
-        from ..resistance import Tug
-
         tonne = 9.80665e3
         eff = dict(efficiency=g["efficiency"], resistance_coefficient=g["resistance_coefficient"])
         try:
@@ -568,7 +565,6 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
                         p.error(("tug", k), "a pull table needs both speeds and pulls_t")
                 if len(g["speeds"]) != len(g["pulls_t"]):
                     p.error(("tug", "pulls_t"), "needs as many values as speeds")
-                import numpy as np
 
                 tug = Tug.from_table(g["speeds"], np.asarray(g["pulls_t"]) * tonne, **eff)
             else:
@@ -590,8 +586,6 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
     water_depth = r.get("water_depth")
 
     # ---------------------------------------------------------------- sea states
-    from ..resistance import SeaState
-    from ..waves import physical_tp_range
 
     seas = []
     for i, s in enumerate(seas_raw):
@@ -676,7 +670,6 @@ def _catalogue_line(p: Problems, t: dict):
             if k in t:
                 p.error(("towline", k), "needs line = ... (a catalogue line)")
         return None
-    from .. import lines
 
     if "diameter_mm" not in t:
         p.error(("towline", "diameter_mm"), "missing key: a catalogue line needs its diameter")
@@ -689,7 +682,6 @@ def _catalogue_line(p: Problems, t: dict):
 
 def _segments(p: Problems, segs: list) -> list:
     """[(LineType, length [m]), ...] of [towline] segments (each checked, named by index)."""
-    from .. import lines
 
     out = []
     for i, seg in enumerate(segs):
@@ -748,7 +740,6 @@ def _mesh_spec(p: Problems, mesh, base, draft) -> dict:
         p.error(("hull", "mesh"), f"no mesh file {str(path)!r}")
     if m.get("method", "near_field") not in ("near_field", "far_field"):
         p.error(("hull", "mesh"), f"method near_field or far_field, got {m['method']!r}")
-    from ._schema import Key
 
     for k, default in (("omega", [0.05, 2.5, 61]), ("beta_deg", [0.0, 180.0, 25])):
         try:
@@ -769,9 +760,6 @@ def _mesh_spec(p: Problems, mesh, base, draft) -> dict:
 
 def _mesh_drift(spec: dict, form: str):
     """(QTF, description) of a mesh by a Capytaine panel solve (cached per frequency)."""
-    import numpy as np
-
-    from .. import bem
 
     try:
         bem.require_capytaine()
@@ -809,7 +797,6 @@ def _field_key(message: str, t: dict) -> str:
 
 
 def _describe_drift(drift, form) -> str:
-    from ..drift import METHODS
 
     if isinstance(drift, str) and drift in METHODS:
         return f"waterline method {drift!r} (misses the motion-induced drift where L/lambda < 1)"

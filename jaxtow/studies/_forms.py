@@ -9,6 +9,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from ..drift._sailing import FORMS, irregular_sailing_drift, sailing_drift
+from ..resistance import operating_speed
 from ..waves import DEFAULT_OMEGA, jonswap
 
 
@@ -73,8 +74,6 @@ def sailing_forms(
             operating_speed=None,
         )
         if resistance is not None:
-            from ..resistance import operating_speed
-
             p = operating_speed(resistance(form), tug, sea, throw=False)
             row["operating_speed"] = float(p.speed) if bool(p.valid) else None
         out[form] = row

@@ -4,14 +4,16 @@ transit time; SI)."""
 
 from __future__ import annotations
 
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+
+from .. import resistance as R
+from ..waves import physical_tp_range
+
 
 def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
     """Everything the table prints for one sea state (SI)."""
-    import jax
-    import jax.numpy as jnp
-
-    from .. import resistance as R
-    from ..waves import physical_tp_range
 
     req = R.required_pull(tow, sea, heading=heading, tug=tug)
     out = dict(
@@ -61,7 +63,6 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
 
 
 def eqx_tp(sea, tp):
-    import equinox as eqx
 
     return eqx.tree_at(lambda s: s.tp, sea, tp)
 

@@ -18,12 +18,24 @@ import dataclasses
 import math
 from functools import cached_property
 
+import equinox as eqx
 import numpy as np
 
 from .. import presets
-from .._stability import STABILITY_TOL
-from . import _waves as W
-from ._maps import map_axes, run_map, straight
+from .._compile_cache import enable_compile_cache
+from .._equilibrium import equilibria
+from .._metrics import fishtail_metrics
+from .._parameters import get_parameter, with_parameters
+from .._simulate import initial_state, simulate
+from .._stability import STABILITY_TOL, classify
+from ..design import sensitivity_arrays
+from ..forces import IrregularWaveDriftForce, SlowDriftForce
+from ..forces._wind import WindForce
+from ..presets import barge2_irregular_model, barge2_wave_model, drift_source
+from ..resistance import resistance_grid
+from ..waves import physical_tp_range
+from . import _claims as W
+from ._maps import map_axes, run_map, straight, valid_count
 
 #: The stability claims of chapters 6.2-6.3 and 7.2.2, in report order.
 CLAIM_IDS = (
@@ -62,7 +74,7 @@ PANEL_ESTIMATES = ("cog_z", "radii_of_gyration", "roll_damping")
 @dataclasses.dataclass(frozen=True)
 class WaveStudy:
     """The wave study for one drift source (``qtf``: any spec of
-    `jaxtow.drift.drift_source`; default the shipped Barge 2 near-field database) and one
+    `jaxtow.presets.drift_source`; default the shipped Barge 2 near-field database) and one
     forward-speed ``form``, on maps of ``n`` points per axis. ``draft`` and ``factors``
     ((name, factor) pairs multiplying the estimates a11, a22, a66, EA) are the estimate
     overrides `attribute` uses; ``specialise=True`` compiles each sweep for its model instance
@@ -87,14 +99,11 @@ class WaveStudy:
 
     def __post_init__(self):
         if self.compile_cache:
-            from .._compile_cache import enable_compile_cache
-
             enable_compile_cache()
 
     # ------------------------------------------------------------------ building blocks
     @cached_property
     def _source(self):
-        from ..drift._database import drift_source
 
         return drift_source(self.qtf)
 
@@ -124,14 +133,12 @@ class WaveStudy:
     def _apply(self, m):
         if not self.factors:
             return m
-        from .._parameters import get_parameter, with_parameters
 
         return with_parameters(
             m, **{k: float(get_parameter(m, k)) * float(f) for k, f in self.factors}
         )
 
     def wave_model(self, version: str = "2a", **kw):
-        from ..study import barge2_wave_model
 
         kw = dict(dict(omega=1.0, zeta_a=self.zeta_a), **kw)
         return self._apply(
@@ -139,7 +146,6 @@ class WaveStudy:
         )
 
     def irregular_model(self, version: str = "2a", **kw):
-        from ..study import barge2_irregular_model
 
         kw = dict(dict(hs=self.hs, tp=float(np.mean(self.axes["tp"]))), **kw)
         return self._apply(
@@ -205,7 +211,6 @@ class WaveStudy:
 
     @cached_property
     def calm_counts(self) -> dict:
-        from ..study import valid_count
 
         return {
             v: int(
@@ -218,8 +223,6 @@ class WaveStudy:
 
     # ------------------------------------------------------------------ time domain
     def run(self, model, psi0: float = 0.2, y0: float = 0.1):
-        from .._metrics import fishtail_metrics
-        from .._simulate import initial_state, simulate
 
         sim = simulate(model, initial_state(model, psi0=psi0, y0=y0), t1=self.t1, n_save=2001)
         return sim, fishtail_metrics(model, sim)
@@ -232,7 +235,6 @@ class WaveStudy:
     def runs(self) -> dict:
         """{tag: (model, Simulation, metrics)} of Barge 2a at l0' = 2.5: calm, regular waves
         at ω = 1.0 and 1.5 rad/s, the irregular sea at Tp = 7 s, and the head wind alone."""
-        from ..forces._wind import WindForce
 
         models = {
             "calm": self.wave_model("2a", l0=2.5, zeta_a=0.0),
@@ -264,9 +266,6 @@ class WaveStudy:
     def agreement(self) -> dict:
         """Time-domain outcome against the linear verdict at map points away from the
         boundary (|max Re λ| > 0.02), four on each side."""
-        from .._equilibrium import equilibria
-        from .._metrics import fishtail_metrics
-        from .._simulate import simulate
 
         margin, per_side = 0.02, 4
         mp = straight(self.maps_l0_omega["2a"])
@@ -307,8 +306,6 @@ class WaveStudy:
     def stationary_shares(self) -> dict:
         """Shares [%] of current, wind and waves of the stationary tow in sea state 1 over
         the physical Tp range (fig. 7.2b)."""
-        from ..resistance import resistance_grid
-        from ..waves import physical_tp_range
 
         sea = presets.sea_state("survival")
         lo, hi = (float(t) for t in physical_tp_range(float(sea.hs)))
@@ -321,7 +318,6 @@ class WaveStudy:
     def sailing_shares(self) -> dict:
         """Shares [%] (wind, waves, current) of the sailing tow at Tp = 7 s in sea state 2
         over the speeds of `THESIS_SAILING_SHARES` (fig. 7.4b)."""
-        from ..resistance import resistance_grid
 
         sea = presets.sea_state("sailing", tp=7.0)
         speeds = np.array(sorted(THESIS_SAILING_SHARES))
@@ -344,8 +340,6 @@ class WaveStudy:
         elif cid == "barge_2b_stays_stable":
             r = W.barge_2b_stays_stable(straight(s.maps_l0_omega["2b"]), s.calm["2b"], source=src)
         elif cid == "small_waves_add_no_equilibria":
-            from ..study import valid_count
-
             counts = {}
             for v, ds in s.equilibria_zeta_omega.items():
                 cnt = valid_count({"valid": ds["valid"].values})
@@ -474,7 +468,6 @@ class WaveStudy:
         if cid == "low_frequency_waves_keep_calm_verdict":
             low = ax["omega"] < W.LOW_OMEGA
             calm = self.calm["2a"][:, None]
-            from .._stability import classify
 
             def mask(mp):
                 return (np.asarray(classify(mp)) != np.asarray(classify(calm))) & low[None, :]
@@ -572,8 +565,6 @@ def attribute(
             else "not a stability margin (counts, path widths or shares): no gradient"
         )
     else:
-        from ..design import sensitivity_arrays
-
         model, want, where = crit
         names = ("a11", "a22", "a66", "EA")
         _, x, g, a, _ = sensitivity_arrays(model, names)
@@ -617,11 +608,6 @@ def slow_drift_runs(
     record of ``hours``: with the seeded slowly varying drift (Newman's approximation,
     `jaxtow.forces.SlowDriftForce`) and with the mean drift only. Returns {tag: (model,
     Simulation, metrics, yaw statistics)}."""
-    import equinox as eqx
-
-    from .._metrics import fishtail_metrics
-    from .._simulate import initial_state, simulate
-    from ..forces import IrregularWaveDriftForce, SlowDriftForce
 
     mean = study.irregular_model("2a", l0=2.5, tp=tp)
     f = mean.external

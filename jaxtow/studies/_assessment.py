@@ -12,7 +12,21 @@ import sys
 import time
 from dataclasses import dataclass, field
 
+import jax
+import jax.numpy as jnp
 import numpy as np
+
+from .. import resistance as R
+from .._dynamics import all_valid, validity
+from .._equilibrium import equilibria
+from .._metrics import fishtail_metrics, trajectory
+from .._results import sweep
+from .._simulate import initial_state, simulate
+from .._stability import MARGINAL, STABILITY_LABELS, STABLE, stability
+from .._units import RHO_SEA, G
+from ..drift import irregular_sailing_drift
+from ..waves import DEFAULT_OMEGA, Jonswap
+from ._resistance import evaluate
 
 __all__ = ["Steps", "TowStudy", "tow_study", "verdict", "VERDICTS", "VALIDITY_WORDS"]
 
@@ -70,7 +84,6 @@ def verdict(psi, max_real, valid, stab_codes) -> str:
     """The key of `VERDICTS` for equilibria at headings ``psi`` [rad] with ``max_real``,
     found by the solver where ``valid``, and `jaxtow.classify` codes ``stab_codes`` (−1
     stable, 0 marginal, 1 unstable)."""
-    from .._stability import MARGINAL, STABLE
 
     psi, ok, codes = np.asarray(psi), np.asarray(valid, bool), np.asarray(stab_codes)
     stable = ok & (codes == STABLE)
@@ -101,11 +114,6 @@ class TowStudy:
 
 
 def _equilibria_record(model):
-    import jax.numpy as jnp
-
-    from .._dynamics import all_valid, validity
-    from .._equilibrium import equilibria
-    from .._stability import STABILITY_LABELS, stability
 
     eqs = equilibria(model)
     st = stability(model, eqs.state)
@@ -148,7 +156,6 @@ def _equilibria_record(model):
 def _catenary_record(model, water_depth):
     """Sag, end tension, effective stiffness and seabed clearance of a catenary towline at
     the calm-water equilibrium nearest straight behind (SI)."""
-    from .._equilibrium import equilibria
 
     eqs = equilibria(model)
     k = int(np.argmin(np.where(np.asarray(eqs.valid), np.abs(np.asarray(eqs.psi)), np.inf)))
@@ -214,17 +221,6 @@ def tow_study(
     and the speeds default to the tow file's ``[study]``; the keywords override them (the
     tests use small grids). Steps the tow cannot take (no manoeuvring model, no tug, no
     sea state) are listed in ``summary['skipped']`` with the reason."""
-    import jax
-    import jax.numpy as jnp
-
-    from .. import resistance as R
-    from .._metrics import fishtail_metrics, trajectory
-    from .._simulate import initial_state, simulate
-    from .._sweep import sweep
-    from .._units import RHO_SEA, G
-    from ..drift import irregular_sailing_drift
-    from ..waves import DEFAULT_OMEGA, Jonswap
-    from ._resistance import evaluate
 
     opts = dict(tow.study)
     map_xp = _grid(opts["map_xp"] if map_xp is None else map_xp)

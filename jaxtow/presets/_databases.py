@@ -18,8 +18,14 @@ from collections.abc import Mapping
 from functools import cache
 from importlib import resources
 from os import PathLike
+from pathlib import Path
 
-from ._qtf import QTF
+import numpy as np
+import xarray as xr
+
+from ..drift import QTF, qtf_from_method
+from ..io import load_qtf, read_qtf
+from ._barge2 import barge2_waterline
 
 #: The shipped hulls and the two drift methods of each.
 DATABASES = ("barge1", "barge2")
@@ -28,6 +34,24 @@ DATABASE_METHODS = ("far_field", "near_field")
 DEFAULT_METHOD = "near_field"
 #: The stand-in drift source's name (a QTF tabulated from the Kashiwagi waterline method).
 STANDIN = "standin"
+
+
+#: Grid of the stand-in QTF (rad/s; headings 0-180 deg completed by symmetry).
+QTF_OMEGA = np.linspace(0.1, 2.5, 49)
+QTF_BETA_DEG = np.linspace(0.0, 180.0, 19)
+APPROXIMATE_QTF = (
+    "APPROXIMATE drift forces: QTF tabulated from the Kashiwagi waterline method "
+    "(diffraction only, no motion-induced drift) on the estimated Barge 2 rake, "
+    "with Aranha's wave-drift damping; the thesis used Delfrac near-field QTFs"
+)
+
+
+def approximate_qtf(method: str = "kashiwagi", draft=None):
+    """The documented stand-in QTF of Barge 2: a QTF tabulated from a waterline method
+    (`jaxtow.drift.qtf_from_method`, default Kashiwagi: Fujii-Takahashi diffraction, no
+    motion-induced drift, which matters where L/λ < 1, ω below about 0.9 rad/s for Barge 2)
+    on `barge2_waterline`, over `QTF_OMEGA` and `QTF_BETA_DEG` (`APPROXIMATE_QTF` says so)."""
+    return qtf_from_method(method, barge2_waterline(draft), QTF_OMEGA, np.radians(QTF_BETA_DEG))
 
 
 def _check(name: str, method: str) -> None:
@@ -45,10 +69,6 @@ def database_file(name: str = "barge2", method: str = DEFAULT_METHOD):
 
 @cache
 def _load(name: str, method: str):
-    import xarray as xr
-
-    from ..io import load_qtf
-
     path = database_file(name, method)
     with resources.as_file(path) as p:
         attrs = dict(xr.load_dataset(p).attrs)
@@ -93,7 +113,7 @@ def drift_source(spec=None, *, hull: str = "barge2"):
       method (None: `DEFAULT_METHOD`);
     * ``"barge1:far_field"`` etc.: a shipped database by hull and method;
     * ``"standin"``: the documented stand-in (Kashiwagi waterline QTF of Barge 2,
-      `jaxtow.study.approximate_qtf`);
+      `approximate_qtf`);
     * a `QTF`: used as given ("user QTF");
     * any other string: a drift file (`jaxtow.io.read_qtf`: jaxtow .nc/.csv, a Capytaine
       drift NetCDF, WAMIT .8/.9) read with the default options;
@@ -120,16 +140,12 @@ def drift_source(spec=None, *, hull: str = "barge2"):
             f"{type(spec).__name__}"
         )
     if spec == STANDIN:
-        from ..study import APPROXIMATE_QTF, approximate_qtf
-
         return approximate_qtf(), APPROXIMATE_QTF
     name, _, method = spec.rpartition(":") if ":" in spec else (hull, "", spec)
     if name in DATABASES and method in DATABASE_METHODS:
         return database(name, method), describe_database(name, method)
     if spec in DATABASES:
         return database(spec, DEFAULT_METHOD), describe_database(spec, DEFAULT_METHOD)
-    from pathlib import Path
-
     if not Path(spec).exists():
         raise ValueError(
             f"drift source {spec!r}: not a shipped database ({', '.join(DATABASE_METHODS)}, "
@@ -160,8 +176,6 @@ FILE_OPTIONS = ("ulen", "rho", "g", "symmetry", "symmetry_tol", "reference_point
 
 
 def _from_file(path: str, options: dict):
-    from ..io import read_qtf
-
     bad = sorted(set(options) - set(FILE_OPTIONS) - {"length"})
     if bad:
         raise ValueError(f"drift file {path}: unknown options {bad}; choose from {FILE_OPTIONS}")

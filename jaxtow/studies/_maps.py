@@ -6,7 +6,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._results import sweep
 from .._stability import classify
+from ..presets import barge2_irregular_model, barge2_wave_model
+from ..waves import physical_tp_range
 
 #: The map axes of the wave study: l0' and ω [rad/s] of the regular-wave maps, and the number
 #: of Tp values over the physical range of the irregular-sea maps.
@@ -29,7 +32,6 @@ def run_map(
     """One sweep of the wave study (up to 4 equilibria per point, eigenvalues by LAPACK, the
     kernel specialised to the model's QTF unless ``specialise=False``) as a Dataset, in
     chunks of `WAVE_CHUNK` points."""
-    from .._sweep import sweep
 
     return sweep(
         model,
@@ -45,14 +47,12 @@ def run_map(
 
 def straight(ds, field: str = "max_real"):
     """``field`` of the equilibrium nearest straight behind at every map point (NaN where none)."""
-    from ..study import nearest_straight
 
     return nearest_straight({k: ds[k].values for k in ("valid", "psi", field)}, field)
 
 
 def map_axes(n: int, hs: float = 2.4) -> dict:
     """The axes of `verdict_maps` for ``n`` points per axis (n // 2, at least 6, Tp values)."""
-    from ..waves import physical_tp_range
 
     lo, hi = (float(t) for t in physical_tp_range(hs))
     return dict(
@@ -76,11 +76,10 @@ def verdict_maps(
     """max Re λ of the equilibrium nearest straight behind on the four maps of the wave study
     (`MAP_NAMES`: Barge 2a and 2b over (l0', ω) in regular head waves of amplitude ``zeta_a``,
     and over (l0', Tp) in a JONSWAP head sea of height ``hs`` over the physical Tp range), for
-    the drift source ``qtf`` (any spec of `jaxtow.drift.drift_source`) and ``form``; the
+    the drift source ``qtf`` (any spec of `jaxtow.presets.drift_source`) and ``form``; the
     kernels are compiled once per model structure (``specialise=False``), so tables of one
     shape share them. Returns
     {name: (n_l0, n_y) array, "axes": `map_axes`}."""
-    from ..study import barge2_irregular_model, barge2_wave_model
 
     ax = map_axes(n, hs)
     out: dict = {"axes": ax}
@@ -121,3 +120,17 @@ def verdict_change(a, b) -> dict:
         points=int(a.size),
         max_abs_change=float(np.max(np.abs(a - b)[both])) if both.any() else float("nan"),
     )
+
+
+def nearest_straight(arrays: dict, field: str = "max_real"):
+    """``field`` of the valid equilibrium nearest ψ = 0 at every sweep point (NaN where none):
+    the thesis's position 3 (straight behind) when it exists."""
+    psi = np.where(arrays["valid"], np.abs(arrays["psi"]), np.inf)
+    k = np.argmin(psi, axis=-1)
+    out = np.take_along_axis(np.asarray(arrays[field], float), k[..., None], -1)[..., 0]
+    return np.where(np.isfinite(np.min(psi, axis=-1)), out, np.nan)
+
+
+def valid_count(arrays: dict):
+    """Number of valid equilibria at every sweep point."""
+    return np.sum(np.asarray(arrays["valid"]), axis=-1)

@@ -1,0 +1,113 @@
+"""What runs: the thesis's wave study and its claims (`WaveStudy`, thesis chapters 6.2-6.3
+and 7), the stability maps and the forward-speed forms it compares, and the assessment of one
+tow (`tow_study`, the command ``jaxtow study``). Each returns numbers and result records;
+`jaxtow.reports` and `jaxtow.plotting` render them, the command line writes them.
+
+Modules: `_claims` (each thesis claim as a function of a study's arrays), `_maps` (the
+stability maps of the wave study and their reductions), `_forms` (the forward-speed forms of
+the drift compared), `_waves` (`WaveStudy`, the attribution of claims), `_resistance` (one sea
+state's resistance summary), `_assessment` (the assessment of one tow).
+"""
+
+from typing import TYPE_CHECKING
+
+from .._lazy import attach as _attach
+
+if TYPE_CHECKING:
+    from ._assessment import (
+        TowStudy as TowStudy,
+        tow_study as tow_study,
+        verdict as verdict,
+    )
+    from ._claims import (
+        BAND_OMEGA_MAX as BAND_OMEGA_MAX,
+        LOW_OMEGA as LOW_OMEGA,
+        PATH_WIDTH_FACTOR as PATH_WIDTH_FACTOR,
+        SMALL_ZETA_A as SMALL_ZETA_A,
+        THESIS_PATH_WIDTHS as THESIS_PATH_WIDTHS,
+        barge_2b_stays_stable as barge_2b_stays_stable,
+        claim as claim,
+        head_wind_reduces_path_width as head_wind_reduces_path_width,
+        irregular_sea_keeps_2a_stable as irregular_sea_keeps_2a_stable,
+        low_frequency_waves_keep_calm_verdict as low_frequency_waves_keep_calm_verdict,
+        moderate_waves_stabilise_2a as moderate_waves_stabilise_2a,
+        path_widths_match_thesis as path_widths_match_thesis,
+        small_waves_add_no_equilibria as small_waves_add_no_equilibria,
+        time_domain_agrees_with_linear as time_domain_agrees_with_linear,
+        waves_reduce_path_width as waves_reduce_path_width,
+    )
+    from ._forms import (
+        forms_table as forms_table,
+        sailing_forms as sailing_forms,
+    )
+    from ._maps import (
+        MAP_NAMES as MAP_NAMES,
+        map_axes as map_axes,
+        nearest_straight as nearest_straight,
+        run_map as run_map,
+        straight as straight,
+        valid_count as valid_count,
+        verdict_change as verdict_change,
+        verdict_maps as verdict_maps,
+    )
+    from ._resistance import (
+        evaluate as evaluate_resistance,
+        resistance_table as resistance_table,
+    )
+    from ._waves import (
+        CLAIM_IDS as CLAIM_IDS,
+        MODEL_ESTIMATES as MODEL_ESTIMATES,
+        PANEL_ESTIMATES as PANEL_ESTIMATES,
+        RESISTANCE_CLAIM_IDS as RESISTANCE_CLAIM_IDS,
+        SHARE_TOLERANCE as SHARE_TOLERANCE,
+        THESIS_SAILING_SHARES as THESIS_SAILING_SHARES,
+        THESIS_STATIONARY_WAVE_SHARE as THESIS_STATIONARY_WAVE_SHARE,
+        WaveStudy as WaveStudy,
+        attribute as attribute,
+        slow_drift_runs as slow_drift_runs,
+    )
+
+__all__ = [
+    "forms_table",
+    "sailing_forms",
+    "MAP_NAMES",
+    "map_axes",
+    "run_map",
+    "straight",
+    "verdict_change",
+    "verdict_maps",
+    "nearest_straight",
+    "valid_count",
+    "CLAIM_IDS",
+    "MODEL_ESTIMATES",
+    "PANEL_ESTIMATES",
+    "RESISTANCE_CLAIM_IDS",
+    "SHARE_TOLERANCE",
+    "THESIS_SAILING_SHARES",
+    "THESIS_STATIONARY_WAVE_SHARE",
+    "WaveStudy",
+    "attribute",
+    "slow_drift_runs",
+    "BAND_OMEGA_MAX",
+    "LOW_OMEGA",
+    "PATH_WIDTH_FACTOR",
+    "SMALL_ZETA_A",
+    "THESIS_PATH_WIDTHS",
+    "barge_2b_stays_stable",
+    "claim",
+    "head_wind_reduces_path_width",
+    "irregular_sea_keeps_2a_stable",
+    "low_frequency_waves_keep_calm_verdict",
+    "moderate_waves_stabilise_2a",
+    "path_widths_match_thesis",
+    "small_waves_add_no_equilibria",
+    "time_domain_agrees_with_linear",
+    "waves_reduce_path_width",
+    "evaluate_resistance",
+    "resistance_table",
+    "TowStudy",
+    "tow_study",
+    "verdict",
+]
+
+__getattr__, __dir__ = _attach(__name__, __file__)
