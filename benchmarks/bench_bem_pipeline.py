@@ -27,7 +27,9 @@ import time
 from pathlib import Path
 
 from jaxtow import bem
-from jaxtow.bem.solve import DOFS, rigid_body, symmetric_capytaine_mesh
+from jaxtow.bem.body import rigid_body
+from jaxtow.bem.capytaine_mesh import symmetric_capytaine_mesh
+from jaxtow.bem.solve import DOFS
 from jaxtow.cli.bem import build, read_config
 
 RUN = "import sys; from jaxtow.cli import main; sys.exit(main())"

@@ -34,7 +34,9 @@ def _compile_here(model, grid, chunk, options):
     xp, l0 = grid["xp"], grid["l0"]
     rows = -(-chunk // xp.size)  # enough l0 values for one full chunk
     t = time.perf_counter()
-    jt.sweep_arrays(model, {"xp": xp, "l0": l0[:rows]}, chunk_size=chunk, **options)
+    jt.sweep_arrays(
+        model, {"xp": xp, "l0": l0[:rows]}, *jt.sweep_options(chunk_size=chunk, **options)
+    )
     return time.perf_counter() - t
 
 

@@ -51,7 +51,9 @@ def one(job: str, size: int, chunked: bool) -> dict:
         chunk = CHUNK[job] if chunked else size
 
         def work():
-            return jt.sweep_arrays(m, grid, method="analytic", chunk_size=chunk)
+            return jt.sweep_arrays(
+                m, grid, jt.SweepSolver(method="analytic"), jt.SweepExecution(chunk_size=chunk)
+            )
     elif job == "waves":
         m = jt.presets.barge2_wave_model("2a")
         grid = {
@@ -61,7 +63,12 @@ def one(job: str, size: int, chunked: bool) -> dict:
         chunk = CHUNK[job] if chunked else size
 
         def work():
-            return jt.sweep_arrays(m, grid, n_grid=201, routh_hurwitz=False, chunk_size=chunk)
+            return jt.sweep_arrays(
+                m,
+                grid,
+                jt.SweepSolver(n_grid=201, routh_hurwitz=False),
+                jt.SweepExecution(chunk_size=chunk),
+            )
     else:
         from jaxtow._simulate import initial_state
 

@@ -30,7 +30,7 @@ sys.path.insert(0, str(Path(__file__).parent))
 from baseline_numpy_waves import NumpyQTF, stability_map  # noqa: E402
 
 import jaxtow as jt  # noqa: E402
-from jaxtow._sweep import make_specialised_kernel, sweep_arrays  # noqa: E402
+from jaxtow._sweep import make_specialised_kernel, sweep_arrays, sweep_options  # noqa: E402
 from jaxtow.presets import barge2_wave_model
 from jaxtow.studies import nearest_straight  # noqa: E402
 
@@ -62,10 +62,12 @@ def main(argv=None):
 
     grid = {"l0": l0, "external.omega": omega}
     t = time.perf_counter()
-    sweep_arrays(model, grid, **opts)  # the first call compiles (specialised to this model)
+    sweep_arrays(
+        model, grid, *sweep_options(**opts)
+    )  # the first call compiles (specialised to this model)
     first = time.perf_counter() - t
     t = time.perf_counter()
-    arrays = sweep_arrays(model, grid, **opts)
+    arrays = sweep_arrays(model, grid, *sweep_options(**opts))
     t_jax = time.perf_counter() - t
     compile_s = first - t_jax
     mr = nearest_straight(arrays)

@@ -114,7 +114,12 @@ if TYPE_CHECKING:
         spectral_abscissa as spectral_abscissa,
         stability as stability,
     )
-    from ._sweep import sweep_arrays as sweep_arrays
+    from ._sweep import (
+        SweepExecution as SweepExecution,
+        SweepSolver as SweepSolver,
+        sweep_arrays as sweep_arrays,
+        sweep_options as sweep_options,
+    )
     from ._towline import (
         AbstractTowline as AbstractTowline,
         Bridle as Bridle,
@@ -175,6 +180,9 @@ __all__ = [
     "stability",
     "sweep",
     "sweep_arrays",
+    "SweepSolver",
+    "SweepExecution",
+    "sweep_options",
     "sensitivities",
     "AbstractProgressMeter",
     "NoProgressMeter",

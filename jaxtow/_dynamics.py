@@ -24,7 +24,7 @@ import jax
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
-from . import _rules as V
+from ._rules import POSITIVE, Checked, in_range, is_concrete, rule_field
 from ._towline import AbstractTowline
 from ._units import Scales
 from ._vessel import Vessel
@@ -41,7 +41,7 @@ STATE_LONG_NAMES = (
 )
 
 
-class TowModel(V.Checked):
+class TowModel(Checked):
     """A vessel on a towline behind a tug: the full parameter set of eqs 6.1-6.6.
 
     ``psi_max``: largest |ψ| [rad] at which the manoeuvring model is trusted; equilibria
@@ -57,12 +57,12 @@ class TowModel(V.Checked):
     vessel: Vessel
     towline: AbstractTowline
     external: AbstractExternalForce = NoExternalForce()
-    psi_max: Float[Array, ""] = V.rule_field(rule=V.in_range(0.0, math.pi), default=math.pi / 2)
+    psi_max: Float[Array, ""] = rule_field(rule=in_range(0.0, math.pi), default=math.pi / 2)
     scales: Scales | None = None
 
     def __check_init__(self):
         found = all_scales(self)
-        concrete = [s for s in found if V.is_concrete(s.u_tug)]
+        concrete = [s for s in found if is_concrete(s.u_tug)]
         keys = {(s.length, s.draft, s.rho, float(s.u_tug)) for s in concrete}
         if len(keys) > 1:
             raise ValueError(
@@ -111,7 +111,7 @@ def at_tug_speed(model: TowModel, u_tug) -> TowModel:
         )
     # eager (a zero speed made EA' infinite and the error named EA); a traced speed is checked
     # where the model is used, by the rule on `Scales.u_tug` (no host callback in the sweeps)
-    V.POSITIVE.check("u_tug", u_tug)
+    POSITIVE.check("u_tug", u_tug)
     u_tug = jnp.asarray(u_tug, dtype=float)
     model = eqx.tree_at(
         lambda m: m.towline, model, model.towline.rescaled((ref.u_tug / u_tug) ** 2)

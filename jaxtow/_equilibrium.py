@@ -32,7 +32,6 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
-from . import _rules as V
 from ._dynamics import TowModel, force_breakdown, vector_field
 from ._roots import bisect, brackets, polish
 from ._rules import check_now, guard, is_concrete
@@ -272,7 +271,7 @@ def analytic_equilibria(model: TowModel, *, check: bool = True) -> Equilibria:
         raise ValueError("analytic_equilibria needs a model without external forces")
     if not isinstance(model.towline, Towline):
         raise ValueError("analytic_equilibria needs the elastic Towline (eq. 2.11)")
-    if V.is_concrete(model.towline.yp) and float(model.towline.yp) != 0.0:
+    if is_concrete(model.towline.yp) and float(model.towline.yp) != 0.0:
         raise ValueError("analytic_equilibria needs a centred towline (yp = 0); use equilibria")
     ves, xp, EA, l0 = model.vessel, model.towline.xp, model.towline.EA, model.towline.l0
     rad = (ves.Nv - ves.Yv * xp) / (ves.Yvvv * xp - ves.Nvvv)  # eq. 6.8

@@ -4,13 +4,16 @@ A package lists its public names once, as ordinary re-exports inside ``if TYPE_C
 (so type checkers and the API docs read them as they always did), and hands its own source
 to `attach`. Each name is imported on first access and then kept in the package, so that
 ``import jaxtow`` costs a few milliseconds and ``jaxtow bem`` or ``jaxtow --help`` never
-load JAX, xarray or Capytaine unless they use them.
+load JAX, xarray or Capytaine unless they use them. A submodule that is not listed loads on
+first use as well (``jaxtow.plotting.calm``), so that the command line can name everything
+through the package facade at no cost until it runs.
 """
 
 from __future__ import annotations
 
 import ast
 import importlib
+import importlib.util
 import sys
 from pathlib import Path
 
@@ -48,7 +51,10 @@ def attach(package: str, file: str):
         try:
             module, attr = table[name]
         except KeyError:
-            raise AttributeError(f"module {package!r} has no attribute {name!r}") from None
+            # a submodule not listed (``jaxtow.plotting.calm``) loads on first use too
+            if importlib.util.find_spec(f"{package}.{name}") is None:
+                raise AttributeError(f"module {package!r} has no attribute {name!r}") from None
+            module, attr = None, name
         if module is None:
             value = importlib.import_module(f"{package}.{attr}")
         else:

@@ -12,7 +12,7 @@ import numpy as np
 
 from ._dynamics import TowModel
 from ._progress import progress_meter
-from ._sweep import sweep_arrays
+from ._sweep import SweepExecution, SweepSolver, sweep_arrays, sweep_options
 from .design import sensitivity_arrays
 from .io.checkpoint import Checkpoint
 from .io.dataset import sweep_dataset
@@ -22,21 +22,35 @@ from .io.design import sensitivity_dataset
 def sweep(
     model: TowModel,
     grid: Mapping[str, np.ndarray],
+    solver: SweepSolver | None = None,
+    execution: SweepExecution | None = None,
     *,
     progress: bool = False,
     checkpoint=None,
     **options,
 ):
     """`jaxtow.sweep_arrays` as an `xarray.Dataset` with coordinates, units and provenance.
-    ``progress=True`` shows a bar; ``checkpoint``: a folder (or a
-    `jaxtow.io.checkpoint.Checkpoint`) where each finished chunk is kept, so that a sweep run
-    again with the same folder computes only the chunks that are missing."""
+    The options are a `jaxtow.SweepSolver` and a `jaxtow.SweepExecution`, or their fields
+    as keywords (``method="analytic"``, ``chunk_size=4096``, ...). ``progress=True`` shows a
+    bar; ``checkpoint``: a folder (or a `jaxtow.io.Checkpoint`) where each finished chunk is
+    kept, so that a sweep run again with the same folder computes only the chunks that are
+    missing."""
+    if options:
+        if solver is not None or execution is not None:
+            raise TypeError("give the sweep's options as objects or as keywords, not both")
+        solver, execution = sweep_options(**options)
+    solver = SweepSolver() if solver is None else solver
     if isinstance(checkpoint, str | os.PathLike):
         checkpoint = Checkpoint(checkpoint)
     arrays = sweep_arrays(
-        model, grid, progress_meter=progress_meter(progress), checkpoint=checkpoint, **options
+        model,
+        grid,
+        solver,
+        execution,
+        progress_meter=progress_meter(progress),
+        checkpoint=checkpoint,
     )
-    return sweep_dataset(model, arrays, method=options.get("method", "numerical"))
+    return sweep_dataset(model, arrays, method=solver.method)
 
 
 def sensitivities(model: TowModel, parameters=None, *, sweep: dict | None = None, psi0=0.0):

@@ -159,6 +159,60 @@ def make_specialised_kernel(model: TowModel, **kernel_options):
 
 
 @dataclasses.dataclass(frozen=True)
+class SweepSolver:
+    """What a sweep computes at every point (the options of `point_kernel`).
+
+    ``method``: "numerical" (every equilibrium, by scanning ``n_grid`` headings over
+    ±``psi_range`` and refining at most ``max_roots`` roots) or "analytic";
+    ``routh_hurwitz``: add the Routh-Hurwitz cross-check; ``eigenvalues``: add every
+    eigenvalue (``eig_real``, ``eig_imag``) to max Re λ; ``eig_method``: by default "routh"
+    (the pure-JAX spectral abscissa, the fastest, on any backend) when the eigenvalues are
+    not wanted; with them, "polynomial" when a chunk is sharded over several CPU devices
+    (concurrent LAPACK calls into OpenBLAS deadlocked there), else "lapack"."""
+
+    method: str = "numerical"
+    n_grid: int = 2001
+    max_roots: int = 4
+    psi_range: float = math.pi / 2
+    routh_hurwitz: bool = True
+    eig_method: str | None = None
+    eigenvalues: bool = False
+
+
+@dataclasses.dataclass(frozen=True)
+class SweepExecution:
+    """How a sweep runs: ``chunk_size`` points per kernel call (memory stays bounded),
+    ``devices`` to shard each chunk over (default: all JAX devices), a ``kernel`` to reuse
+    (`make_batched_kernel`, `make_specialised_kernel`), and ``specialise`` (compile the
+    kernel for this model instance, its arrays as compile-time constants: about 2x faster for
+    an expensive force model such as a QTF wave force, at one compilation per model instead
+    of one per model structure)."""
+
+    chunk_size: int = 16384
+    devices: tuple | None = None
+    kernel: Callable | None = None
+    specialise: bool = False
+
+
+_SOLVER_FIELDS = tuple(f.name for f in dataclasses.fields(SweepSolver))
+_EXECUTION_FIELDS = tuple(f.name for f in dataclasses.fields(SweepExecution))
+
+
+def sweep_options(**options) -> tuple[SweepSolver, SweepExecution]:
+    """The solver and execution objects of loose keyword options (those of `jaxtow.sweep`);
+    an unknown keyword is an error that names it."""
+    bad = sorted(set(options) - set(_SOLVER_FIELDS) - set(_EXECUTION_FIELDS))
+    if bad:
+        raise TypeError(
+            f"unknown sweep option(s) {bad}: the solver takes {list(_SOLVER_FIELDS)}, the "
+            f"execution {list(_EXECUTION_FIELDS)}"
+        )
+    solver = SweepSolver(**{k: v for k, v in options.items() if k in _SOLVER_FIELDS})
+    execution = SweepExecution(**{k: v for k, v in options.items() if k in _EXECUTION_FIELDS})
+    return solver, execution
+
+
+@dataclasses.dataclass(frozen=True)
 class SweepPlan:
     """A checked sweep, cut into chunks: what `sweep_arrays` evaluates chunk by chunk and
     `jaxtow.distributed` hands out as tasks (one chunk a task, the same kernel)."""
@@ -229,19 +283,15 @@ def _check_memory(plan: SweepPlan) -> None:
 def plan_sweep(
     model: TowModel,
     grid: Mapping[str, np.ndarray],
+    solver: SweepSolver | None = None,
     *,
-    method: str = "numerical",
     chunk_size: int = 16384,
     ndev: int = 1,
     on_cpu: bool = True,
-    n_grid: int = 2001,
-    max_roots: int = 4,
-    psi_range: float = math.pi / 2,
-    routh_hurwitz: bool = True,
-    eig_method: str | None = None,
-    eigenvalues: bool = False,
 ) -> SweepPlan:
     """Check ``grid`` against the model's rules and cut it into chunks (see `sweep_arrays`)."""
+    solver = SweepSolver() if solver is None else solver
+    eig_method, eigenvalues = solver.eig_method, solver.eigenvalues
     if not grid:
         raise ValueError("parameter 'grid' must name at least one parameter")
     names = list(grid)
@@ -272,11 +322,11 @@ def plan_sweep(
     chunk = max(ndev, min(int(chunk_size), 1 << max(npts - 1, 1).bit_length()))
     chunk = int(math.ceil(chunk / ndev) * ndev)
     options = dict(
-        method=method,
-        n_grid=n_grid,
-        max_roots=max_roots,
-        psi_range=psi_range,
-        routh_hurwitz=routh_hurwitz,
+        method=solver.method,
+        n_grid=solver.n_grid,
+        max_roots=solver.max_roots,
+        psi_range=solver.psi_range,
+        routh_hurwitz=solver.routh_hurwitz,
         eig_method=eig_method,
     )
     return SweepPlan(
@@ -293,79 +343,50 @@ def plan_sweep(
 def sweep_arrays(
     model: TowModel,
     grid: Mapping[str, np.ndarray],
+    solver: SweepSolver | None = None,
+    execution: SweepExecution | None = None,
     *,
-    method: str = "numerical",
-    chunk_size: int = 16384,
     progress_meter: AbstractProgressMeter | None = None,
-    devices=None,
-    n_grid: int = 2001,
-    max_roots: int = 4,
-    psi_range: float = math.pi / 2,
-    routh_hurwitz: bool = True,
-    eig_method: str | None = None,
-    eigenvalues: bool = False,
-    kernel: Callable | None = None,
-    specialise: bool = False,
     checkpoint=None,
 ) -> dict:
     """Run the sweep and return NumPy arrays shaped ``grid_shape + (slots[, 6])``.
 
     ``grid`` maps parameter names to 1-D value arrays (a Cartesian product is taken).
     All values are checked before anything runs; an invalid one is an error naming it.
-    ``devices``: JAX devices to shard each chunk over (default: all). ``eigenvalues=True``
-    adds every eigenvalue of every equilibrium (``eig_real``, ``eig_imag``) to max Re λ.
-    ``eig_method`` (see `point_kernel`): by default "routh" (the pure-JAX spectral abscissa,
-    the fastest, on any backend) when the eigenvalues are not wanted; with them,
-    "polynomial" when the chunk is sharded over several CPU devices (concurrent LAPACK calls
-    into OpenBLAS deadlocked there), else "lapack". ``specialise=True`` compiles the kernel for this model
-    instance (its arrays become compile-time constants): about 2x faster for an expensive
-    force model (a QTF wave force), at one compilation per model instead of one per model
-    structure; pass a `make_specialised_kernel` as ``kernel`` to reuse it).
-    ``progress_meter``: where each finished chunk is reported (`jaxtow.TqdmProgressMeter`
-    for a bar). ``checkpoint``: an object whose ``open(model, names, axes, chunk, options,
-    nchunks)`` gives a store that ``get``s and ``put``s finished chunks, such as
-    `jaxtow.io.checkpoint.Checkpoint` (a folder where each chunk is saved as it completes);
-    a sweep interrupted and run again with the same folder, model, grid and options computes
-    only the chunks that are missing.
-    To spread the chunks over several processes or machines, see `jaxtow.distributed`.
+    ``solver`` (a `SweepSolver`): what is computed at each point; ``execution`` (a
+    `SweepExecution`): chunks, devices and kernel. ``progress_meter``: where each finished
+    chunk is reported (`jaxtow.TqdmProgressMeter` for a bar). ``checkpoint``: an object whose
+    ``open(model, names, axes, chunk, options, nchunks)`` gives a store that ``get``s and
+    ``put``s finished chunks, such as `jaxtow.io.Checkpoint` (a folder where each chunk is
+    saved as it completes); a sweep interrupted and run again with the same folder, model,
+    grid and options computes only the chunks that are missing. To spread the chunks over
+    several processes or machines, see `jaxtow.distributed`.
     """
-    mesh, ndev = _mesh(devices)
+    solver = SweepSolver() if solver is None else solver
+    execution = SweepExecution() if execution is None else execution
+    for name, obj, cls in (
+        ("solver", solver, SweepSolver),
+        ("execution", execution, SweepExecution),
+    ):
+        if not isinstance(obj, cls):
+            raise TypeError(
+                f"parameter {name!r}: a jaxtow.{cls.__name__} (jaxtow.sweep takes loose "
+                f"keywords), got {obj!r}"
+            )
+    mesh, ndev = _mesh(execution.devices)
+    on_cpu = mesh.devices.flat[0].platform == "cpu"
     plan = plan_sweep(
-        model,
-        grid,
-        method=method,
-        chunk_size=chunk_size,
-        ndev=ndev,
-        on_cpu=mesh.devices.flat[0].platform == "cpu",
-        n_grid=n_grid,
-        max_roots=max_roots,
-        psi_range=psi_range,
-        routh_hurwitz=routh_hurwitz,
-        eig_method=eig_method,
-        eigenvalues=eigenvalues,
+        model, grid, solver, chunk_size=execution.chunk_size, ndev=ndev, on_cpu=on_cpu
     )
     _check_memory(plan)
-    options = plan.options
-    user_kernel = kernel is not None
+    kernel = execution.kernel
+    store = _open_checkpoint(checkpoint, model, plan, solver, execution)
     if kernel is None:
         kernel = (
-            make_specialised_kernel(model, **options)
-            if specialise
-            else make_batched_kernel(**options)
+            make_specialised_kernel(model, **plan.options)
+            if execution.specialise
+            else make_batched_kernel(**plan.options)
         )
-    store = None
-    if checkpoint is not None:
-        if isinstance(checkpoint, str | os.PathLike) or not callable(
-            getattr(checkpoint, "open", None)
-        ):
-            raise TypeError(
-                "parameter 'checkpoint': an object with open(), such as "
-                f"jaxtow.io.Checkpoint(folder), got {checkpoint!r}; jaxtow.sweep takes a folder"
-            )
-        opts = dict(
-            options, eigenvalues=eigenvalues, user_kernel=user_kernel, specialise=specialise
-        )
-        store = checkpoint.open(model, plan.names, plan.axes, plan.chunk, opts, plan.nchunks)
     sharding = NamedSharding(mesh, P("points"))
     bar = (progress_meter or NoProgressMeter()).start(plan.nchunks, "sweep")
     pieces = []
@@ -380,3 +401,21 @@ def sweep_arrays(
         bar.update()
     bar.close()
     return plan.assemble(pieces)
+
+
+def _open_checkpoint(checkpoint, model, plan: SweepPlan, solver, execution):
+    """The chunk store of ``checkpoint`` for this sweep (None without one)."""
+    if checkpoint is None:
+        return None
+    if isinstance(checkpoint, str | os.PathLike) or not callable(getattr(checkpoint, "open", None)):
+        raise TypeError(
+            "parameter 'checkpoint': an object with open(), such as "
+            f"jaxtow.io.Checkpoint(folder), got {checkpoint!r}; jaxtow.sweep takes a folder"
+        )
+    opts = dict(
+        plan.options,
+        eigenvalues=solver.eigenvalues,
+        user_kernel=execution.kernel is not None,
+        specialise=execution.specialise,
+    )
+    return checkpoint.open(model, plan.names, plan.axes, plan.chunk, opts, plan.nchunks)

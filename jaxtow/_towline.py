@@ -16,7 +16,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
-from . import _rules as V
+from ._rules import NONNEGATIVE, POSITIVE, Checked, in_range, is_concrete, rule_field
 
 #: Documented range of the bow-hawser attachment point x_p' (distance of the attachment
 #: point ahead of the CoG in ship lengths): from the CoG (0) to a bridle apex half a ship
@@ -28,7 +28,7 @@ XP_RANGE = (0.0, 1.0)
 YP_RANGE = (-0.5, 0.5)
 
 
-class AbstractTowline(V.Checked):
+class AbstractTowline(Checked):
     """A towline of unstretched length ``l0`` attached at ``xp`` ahead of the CoG and ``yp``
     to port of the centreline (default 0: the centred bow hawser of the thesis).
 
@@ -60,8 +60,8 @@ class AbstractTowline(V.Checked):
 
 
 #: The rules of the attachment point (shared by every towline).
-XP_RULE = V.in_range(*XP_RANGE)
-YP_RULE = V.in_range(*YP_RANGE)
+XP_RULE = in_range(*XP_RANGE)
+YP_RULE = in_range(*YP_RANGE)
 
 
 class Towline(AbstractTowline):
@@ -72,10 +72,10 @@ class Towline(AbstractTowline):
     (default 0; see `jaxtow.vector_field` (docs/model.md section 2) for the extra moment arm).
     """
 
-    l0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    xp: Float[Array, ""] = V.rule_field(rule=XP_RULE)
-    EA: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    yp: Float[Array, ""] = V.rule_field(rule=YP_RULE, default=0.0)
+    l0: Float[Array, ""] = rule_field(rule=POSITIVE)
+    xp: Float[Array, ""] = rule_field(rule=XP_RULE)
+    EA: Float[Array, ""] = rule_field(rule=POSITIVE)
+    yp: Float[Array, ""] = rule_field(rule=YP_RULE, default=0.0)
 
     def tension(self, l):
         return self.EA * jnp.maximum(l / self.l0 - 1.0, 0.0)
@@ -94,11 +94,11 @@ class PowerLawTowline(AbstractTowline):
     scale / (½ρTLU_tug²); ``q``: exponent (> 0).
     """
 
-    l0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    xp: Float[Array, ""] = V.rule_field(rule=XP_RULE)
-    Sb: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    q: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    yp: Float[Array, ""] = V.rule_field(rule=YP_RULE, default=0.0)
+    l0: Float[Array, ""] = rule_field(rule=POSITIVE)
+    xp: Float[Array, ""] = rule_field(rule=XP_RULE)
+    Sb: Float[Array, ""] = rule_field(rule=POSITIVE)
+    q: Float[Array, ""] = rule_field(rule=POSITIVE)
+    yp: Float[Array, ""] = rule_field(rule=YP_RULE, default=0.0)
 
     def tension(self, l):
         strain = l / self.l0 - 1.0
@@ -131,7 +131,7 @@ class Bridle(eqx.Module):
     apex: Float[Array, "2"] = eqx.field(converter=lambda x: jnp.asarray(x, float))
 
     def __check_init__(self):
-        if V.is_concrete(self.legs) and V.is_concrete(self.apex):
+        if is_concrete(self.legs) and is_concrete(self.apex):
             legs, apex = np.asarray(self.legs), np.asarray(self.apex)
             if legs.shape != (2, 2) or apex.shape != (2,):
                 raise ValueError(
@@ -247,11 +247,11 @@ class CatenaryTowline(AbstractTowline):
     `seabed_clearance`; `stiffness` the effective dH'/dl'.
     """
 
-    l0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    xp: Float[Array, ""] = V.rule_field(rule=XP_RULE)
-    EA: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    w: Float[Array, ""] = V.rule_field(rule=V.NONNEGATIVE)
-    yp: Float[Array, ""] = V.rule_field(rule=YP_RULE, default=0.0)
+    l0: Float[Array, ""] = rule_field(rule=POSITIVE)
+    xp: Float[Array, ""] = rule_field(rule=XP_RULE)
+    EA: Float[Array, ""] = rule_field(rule=POSITIVE)
+    w: Float[Array, ""] = rule_field(rule=NONNEGATIVE)
+    yp: Float[Array, ""] = rule_field(rule=YP_RULE, default=0.0)
 
     @classmethod
     def from_si(cls, length, weight, EA, *, scales, xp, yp=0.0):
@@ -436,12 +436,12 @@ class CompositeTowline(AbstractTowline):
     (`jaxtow.lines`).
     """
 
-    l0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    xp: Float[Array, ""] = V.rule_field(rule=XP_RULE)
-    share: Float[Array, " n"] = V.rule_field(rule=V.POSITIVE)
-    EA: Float[Array, " n"] = V.rule_field(rule=V.POSITIVE)
-    w: Float[Array, " n"] = V.rule_field(rule=V.NONNEGATIVE)
-    yp: Float[Array, ""] = V.rule_field(rule=YP_RULE, default=0.0)
+    l0: Float[Array, ""] = rule_field(rule=POSITIVE)
+    xp: Float[Array, ""] = rule_field(rule=XP_RULE)
+    share: Float[Array, " n"] = rule_field(rule=POSITIVE)
+    EA: Float[Array, " n"] = rule_field(rule=POSITIVE)
+    w: Float[Array, " n"] = rule_field(rule=NONNEGATIVE)
+    yp: Float[Array, ""] = rule_field(rule=YP_RULE, default=0.0)
 
     def __check_init__(self):
         shapes = {jnp.shape(self.share)[-1:], jnp.shape(self.EA)[-1:], jnp.shape(self.w)[-1:]}

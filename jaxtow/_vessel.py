@@ -11,7 +11,7 @@ import equinox as eqx
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
-from . import _rules as V
+from ._rules import FINITE, NONNEGATIVE, POSITIVE, Checked, rule_field
 
 #: Field names of a `Vessel` that are physical parameters (in declaration order).
 VESSEL_PARAMETERS = (
@@ -33,7 +33,7 @@ VESSEL_PARAMETERS = (
 )
 
 
-class Vessel(V.Checked):
+class Vessel(Checked):
     """Manoeuvring model of the towed vessel (thesis eqs 6.1-6.3, MMG form of chapter 6).
 
     Fields (all non-dimensional, primes dropped):
@@ -50,21 +50,21 @@ class Vessel(V.Checked):
     every dataset produced from the model).
     """
 
-    m: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    Izz: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    a11: Float[Array, ""] = V.rule_field(rule=V.NONNEGATIVE)
-    a22: Float[Array, ""] = V.rule_field(rule=V.NONNEGATIVE)
-    a66: Float[Array, ""] = V.rule_field(rule=V.NONNEGATIVE)
-    R0: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    Xvv: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Xrr: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Yv: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Yr: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Yvvv: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Yrrr: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Nv: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Nr: Float[Array, ""] = V.rule_field(rule=V.FINITE)
-    Nvvv: Float[Array, ""] = V.rule_field(rule=V.FINITE)
+    m: Float[Array, ""] = rule_field(rule=POSITIVE)
+    Izz: Float[Array, ""] = rule_field(rule=POSITIVE)
+    a11: Float[Array, ""] = rule_field(rule=NONNEGATIVE)
+    a22: Float[Array, ""] = rule_field(rule=NONNEGATIVE)
+    a66: Float[Array, ""] = rule_field(rule=NONNEGATIVE)
+    R0: Float[Array, ""] = rule_field(rule=POSITIVE)
+    Xvv: Float[Array, ""] = rule_field(rule=FINITE)
+    Xrr: Float[Array, ""] = rule_field(rule=FINITE)
+    Yv: Float[Array, ""] = rule_field(rule=FINITE)
+    Yr: Float[Array, ""] = rule_field(rule=FINITE)
+    Yvvv: Float[Array, ""] = rule_field(rule=FINITE)
+    Yrrr: Float[Array, ""] = rule_field(rule=FINITE)
+    Nv: Float[Array, ""] = rule_field(rule=FINITE)
+    Nr: Float[Array, ""] = rule_field(rule=FINITE)
+    Nvvv: Float[Array, ""] = rule_field(rule=FINITE)
     name: str = eqx.field(static=True, default="vessel")
     assumed: tuple = eqx.field(static=True, default=())
 

@@ -31,7 +31,7 @@ import numpy as np
 from ._dynamics import TowModel
 from ._parameters import check_values
 from ._simulate import Simulation, simulate_batch as _simulate_batch
-from ._sweep import make_batched_kernel, make_specialised_kernel, plan_sweep
+from ._sweep import make_batched_kernel, make_specialised_kernel, plan_sweep, sweep_options
 from .io.dataset import sweep_dataset
 
 
@@ -93,8 +93,9 @@ def sweep(
     for bad in ("devices", "kernel", "checkpoint", "progress"):
         if bad in options:
             raise TypeError(f"jaxtow.distributed.sweep does not take parameter {bad!r}")
-    method = options.get("method", "numerical")
-    plan = plan_sweep(model, grid, chunk_size=chunk_size, **options)
+    solver, _ = sweep_options(**options)
+    method = solver.method
+    plan = plan_sweep(model, grid, solver, chunk_size=chunk_size)
     # the model and the plan (its axes, not its points) enter the graph once, as bytes: given
     # as objects, Dask takes dataclasses apart into the graph and rebuilds them by calling
     # their constructors on the worker
@@ -159,7 +160,7 @@ def compile_on_workers(
     model structure, grid chunking and options (and run its first chunk once). Returns
     {worker address: seconds}. Without it each worker compiles on its first task."""
     _dask()
-    plan = plan_sweep(model, grid, chunk_size=chunk_size, **options)
+    plan = plan_sweep(model, grid, sweep_options(**options)[0], chunk_size=chunk_size)
     return client.run(_warm, model, plan, specialise)
 
 

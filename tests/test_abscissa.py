@@ -91,8 +91,8 @@ def test_abscissa_on_known_spectra():
 def test_abscissa_on_calm_map(barge_2a):
     m = model(barge_2a)
     grid = {"xp": np.linspace(0.0, 0.6, 13), "l0": np.linspace(0.2, 2.5, 12)}
-    a = jt.sweep_arrays(m, grid, method="analytic", eig_method="routh")
-    b = jt.sweep_arrays(m, grid, method="analytic", eig_method="lapack")
+    a = jt.sweep_arrays(m, grid, jt.SweepSolver(method="analytic", eig_method="routh"))
+    b = jt.sweep_arrays(m, grid, jt.SweepSolver(method="analytic", eig_method="lapack"))
     ok = b["found"]
     assert ok.sum() > 150
     np.testing.assert_allclose(a["max_real"][ok], b["max_real"][ok], rtol=0, atol=1e-9)

@@ -216,7 +216,7 @@ def test_an_interrupted_sweep_resumes_from_its_checkpoint(tmp_path, monkeypatch,
     import jaxtow._sweep as S
 
     grid = {"xp": np.linspace(0.1, 0.9, 8), "l0": np.linspace(1.0, 3.0, 4)}  # 4 chunks of 8
-    ref = jt.sweep_arrays(model, grid, chunk_size=8)
+    ref = jt.sweep_arrays(model, grid, execution=jt.SweepExecution(chunk_size=8))
     real = S.make_batched_kernel
     state = {"calls": 0, "fail_at": 3}
 
@@ -234,10 +234,14 @@ def test_an_interrupted_sweep_resumes_from_its_checkpoint(tmp_path, monkeypatch,
     monkeypatch.setattr(S, "make_batched_kernel", flaky)
     ck = tmp_path / "chunks"
     with pytest.raises(KeyboardInterrupt):
-        jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=jt.io.Checkpoint(ck))
+        jt.sweep_arrays(
+            model, grid, execution=jt.SweepExecution(chunk_size=8), checkpoint=jt.io.Checkpoint(ck)
+        )
     assert sorted(p.name for p in ck.glob("chunk_*.npz")) == ["chunk_00000.npz", "chunk_00001.npz"]
     state.update(calls=0, fail_at=None)
-    got = jt.sweep_arrays(model, grid, chunk_size=8, checkpoint=jt.io.Checkpoint(ck))
+    got = jt.sweep_arrays(
+        model, grid, execution=jt.SweepExecution(chunk_size=8), checkpoint=jt.io.Checkpoint(ck)
+    )
     assert state["calls"] == 2
     for k in ("psi", "max_real", "valid", "stability"):
         np.testing.assert_array_equal(got[k], ref[k])
@@ -245,7 +249,7 @@ def test_an_interrupted_sweep_resumes_from_its_checkpoint(tmp_path, monkeypatch,
         jt.sweep_arrays(
             model,
             {**grid, "l0": np.linspace(1.0, 2.0, 4)},
-            chunk_size=8,
+            execution=jt.SweepExecution(chunk_size=8),
             checkpoint=jt.io.Checkpoint(ck),
         )
 
@@ -305,7 +309,7 @@ def test_parameters_of_the_wrong_kind_are_named(model):
     with pytest.raises(ValueError, match="grid values for 'l0' must be numbers"):
         jt.sweep_arrays(model, {"l0": ["a", "b"]})
     with pytest.raises(ValueError, match="'chunk_size' must be >= 1"):
-        jt.sweep_arrays(model, {"l0": [1.0, 2.0]}, chunk_size=0)
+        jt.sweep_arrays(model, {"l0": [1.0, 2.0]}, execution=jt.SweepExecution(chunk_size=0))
     with pytest.raises(TypeError, match="parameter 'qtf' must be a jaxtow.drift.QTF"):
         jt.forces.WaveDriftForce(qtf="x", omega=1.0, zeta_a=1.0, scales=P.barge2_scales())
     with pytest.raises(ValueError, match="parameter 'hs' must be a number"):

@@ -156,7 +156,8 @@ def test_far_field_drift_equals_capytaines_own_routine():
     from capytaine.post_pro.kochin import compute_kochin
     from capytaine.post_pro.mean_drift_force import far_field_mean_drift_force
 
-    from jaxtow.bem.solve import _theta_grid, far_field_drift, kochin, to_capytaine_mesh
+    from jaxtow.bem.capytaine_mesh import to_capytaine_mesh
+    from jaxtow.bem.solve import _theta_grid, far_field_drift, kochin
 
     m = bem.barge2_mesh(panel_size=6.0)
     body = bem.rigid_body(m)
@@ -240,7 +241,7 @@ def test_symmetric_solve_equals_the_plain_solve():
     round-off on the box; on the raked barge to 1e-3 of the largest value (Capytaine's
     reflected-panel integrals differ slightly, and the plain solve is the one that breaks the
     symmetry: its head-sea sway and yaw are not zero)."""
-    from jaxtow.bem.solve import symmetric_capytaine_mesh
+    from jaxtow.bem.capytaine_mesh import symmetric_capytaine_mesh
 
     beta = np.radians([0.0, 30.0, 90.0, 150.0])
     for mesh, tol in (

@@ -219,3 +219,32 @@ def test_the_layer_contract_holds():
     r = subprocess.run([str(lint)], capture_output=True, text=True, cwd=PACKAGE.parent, timeout=300)
     assert r.returncode == 0, r.stdout[-3000:] + r.stderr[-3000:]
     assert "1 kept, 0 broken" in r.stdout
+
+
+def test_the_architecture_page_lists_every_module():
+    """docs/architecture.md holds the module table made from the docstrings and the layer
+    contract (`python tests/module_table.py --write` after adding or moving a module)."""
+    import module_table
+
+    assert module_table.current() == module_table.table(), (
+        "docs/architecture.md's module table is out of date: run python tests/module_table.py --write"
+    )
+
+
+#: The functions allowed over `MAX_LINES` (docs/architecture.md, "Function size").
+LONG_FUNCTIONS = {"jaxtow._simulate.integrate", "jaxtow.bem.solve.solve_frequency"}
+MAX_LINES = 80
+
+
+def test_no_function_is_longer_than_80_lines_but_the_listed_kernels():
+    long = {}
+    for m, path in _modules().items():
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
+                n = node.end_lineno - node.lineno + 1
+                if n > MAX_LINES:
+                    long[f"{m}.{node.name}"] = n
+    assert set(long) <= LONG_FUNCTIONS, {k: v for k, v in long.items() if k not in LONG_FUNCTIONS}
+    page = (PACKAGE.parent / "docs" / "architecture.md").read_text(encoding="utf-8")
+    for name in LONG_FUNCTIONS:
+        assert f"`{name}`" in page

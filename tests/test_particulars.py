@@ -128,6 +128,20 @@ def test_a_tow_file_from_particulars_alone():
         _particulars_tow("holtrop")
 
 
+@pytest.mark.parametrize("regression", ["clarke", "kijima"])
+def test_a_particulars_tow_round_trips_through_show(regression):
+    """`jaxtow tow show` writes the regression back (and no empty derivatives table), so
+    the shown file loads back to the same tow: the same resolved file, vessel and towline."""
+    t = _particulars_tow(regression, extra="")
+    text = jt.tow.show(t)
+    assert f'regression = "{regression}"' in text and "derivatives" not in text
+    again = jt.tow.loads(text, source="shown")
+    assert again.resolved == t.resolved
+    for k in jt.VESSEL_PARAMETERS:
+        assert float(getattr(again.vessel, k)) == float(getattr(t.vessel, k)), k
+    assert float(again.towline.EA) == float(t.towline.EA)
+
+
 @pytest.mark.slow
 def test_particulars_vessels_on_barge2_and_their_verdicts():
     """The documented comparison (docs/estimates.md): Barge 2 from its particulars alone on

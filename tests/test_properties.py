@@ -102,7 +102,9 @@ def test_stiff_limit_and_spectral_abscissa(model):
 def test_sweep_point_equals_the_eager_answer(model, l0):
     """A sweep's value at a grid point equals the eager computation on the model with that
     value: `with_parameters` and the vmapped kernel change nothing else."""
-    arrays = jt.sweep_arrays(model, {"l0": np.array([l0])}, n_grid=2001, max_roots=8)
+    arrays = jt.sweep_arrays(
+        model, {"l0": np.array([l0])}, jt.SweepSolver(n_grid=2001, max_roots=8)
+    )
     eqs = jt.equilibria(jt.with_parameters(model, l0=l0))
     found = arrays["found"][0]
     np.testing.assert_allclose(

@@ -292,7 +292,7 @@ def test_report_plan_covers_three_sources_and_two_forms():
 
 
 def test_attribution_text_lists_every_estimate_and_what_flips_the_claim():
-    from jaxtow.cli.report import attribution_text
+    from jaxtow.reports import attribution_text
 
     run = dict(value="x 0.8", reproduced=True, measured={"fraction_stable": 1.0})
     keep = dict(value="x 1.2", reproduced=False, measured={"fraction_stable": 0.62, "x": [1, 2]})
@@ -331,7 +331,7 @@ def test_attribution_text_lists_every_estimate_and_what_flips_the_claim():
     assert "Base database at the panel variants' mesh: not reproduced." in text
     assert "EA -40 %" in text and "make it stable" in text
     assert "Flipped by: EA low." in text
-    from jaxtow.cli.report import _brief
+    from jaxtow.reports._claims import _brief
 
     assert (
         _brief({"shares": {"0": [25.9, 74.1, 0.0]}, "ok": True}) == "shares.0 25.9/74.1/0; ok yes"
@@ -339,7 +339,7 @@ def test_attribution_text_lists_every_estimate_and_what_flips_the_claim():
 
 
 def test_claims_table_has_a_column_per_source_and_form():
-    from jaxtow.cli.report import claims_table
+    from jaxtow.reports import claims_table
 
     rows = [
         dict(
@@ -470,7 +470,7 @@ def test_committed_full_report_covers_every_source_form_and_attribution():
     """The committed real-grid report (benchmarks/data/report_waves) holds every claim under
     the three sources and both forms, an attribution of every claim of the primary study
     that does not reproduce, and the docs show its table as it is (no stale docs)."""
-    from jaxtow.cli.report import attribution_text, claims_markdown, claims_table
+    from jaxtow.reports import attribution_text, claims_markdown, claims_table
     from jaxtow.studies import CLAIM_IDS, RESISTANCE_CLAIM_IDS
 
     data = DOCS.parent / "benchmarks" / "data" / "report_waves"

@@ -24,7 +24,7 @@ def test_sweep_dataset_is_labelled(barge_2a, tmp_path):
     assert "eig_real" not in lean and lean.attrs["eigenvalue_method"] == "routh"
     np.testing.assert_allclose(lean["max_real"], ds["max_real"], atol=1e-10)
     with pytest.raises(ValueError, match="eig_method"):
-        jt.sweep_arrays(model(barge_2a), grid, eigenvalues=True, eig_method="routh")
+        jt.sweep_arrays(model(barge_2a), grid, jt.SweepSolver(eigenvalues=True, eig_method="routh"))
     assert ds["xp"].attrs["units"] == "1" and "attachment" in ds["xp"].attrs["long_name"]
     assert ds["psi"].attrs["units"] == "rad"
     assert "draft" in json.loads(ds.attrs["assumed_values"])
@@ -43,8 +43,8 @@ def test_sweep_dataset_is_labelled(barge_2a, tmp_path):
 
 def test_chunked_equals_single_chunk(barge_2b):
     grid = {"xp": np.linspace(0.0, 0.6, 9), "l0": np.linspace(0.2, 2.5, 5)}
-    a = jt.sweep_arrays(model(barge_2b), grid, chunk_size=7)
-    b = jt.sweep_arrays(model(barge_2b), grid, chunk_size=4096)
+    a = jt.sweep_arrays(model(barge_2b), grid, execution=jt.SweepExecution(chunk_size=7))
+    b = jt.sweep_arrays(model(barge_2b), grid, execution=jt.SweepExecution(chunk_size=4096))
     for k in a:
         if not k.startswith("_"):
             np.testing.assert_array_equal(a[k], b[k])
@@ -52,8 +52,8 @@ def test_chunked_equals_single_chunk(barge_2b):
 
 def test_analytic_and_numerical_sweeps_agree(barge_2a):
     grid = {"xp": np.linspace(0.05, 0.6, 12), "l0": np.array([0.4, 2.0])}
-    num = jt.sweep_arrays(model(barge_2a), grid, method="numerical", max_roots=3)
-    ana = jt.sweep_arrays(model(barge_2a), grid, method="analytic")
+    num = jt.sweep_arrays(model(barge_2a), grid, jt.SweepSolver(method="numerical", max_roots=3))
+    ana = jt.sweep_arrays(model(barge_2a), grid, jt.SweepSolver(method="analytic"))
     np.testing.assert_array_equal(num["n_equilibria"], ana["n_equilibria"])
     # slots are laid out differently (numerical: found roots first, by ψ; analytic: one
     # slot per branch), so compare the found roots in ψ order
@@ -83,7 +83,7 @@ def test_sweep_rejects_bad_grid(barge_2a, grid, name):
 
 
 def test_truncation_is_reported(barge_2b):
-    a = jt.sweep_arrays(model(barge_2b), {"xp": np.array([0.5])}, max_roots=2)
+    a = jt.sweep_arrays(model(barge_2b), {"xp": np.array([0.5])}, jt.SweepSolver(max_roots=2))
     assert bool(a["truncated"][0]) and int(a["n_equilibria"][0]) == 3
     with pytest.raises(ValueError, match="max_roots"):
         jt.equilibria(model(barge_2b), max_roots=2)

@@ -179,7 +179,7 @@ def test_invalid_frequency_grid():
 
 
 def test_wave_figures(tmp_path):
-    from jaxtow.plotting.calm import save
+    from jaxtow.plotting import save
     from jaxtow.plotting.waves import plot_against_tp, plot_spectra
 
     w = np.linspace(0.1, 2.5, 300)

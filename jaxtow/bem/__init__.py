@@ -21,7 +21,31 @@ ImportError that says how to install it; the rest of jaxtow never imports it.
 This is a NumPy pre-processor: it produces tables; the differentiable JAX models consume them.
 """
 
-from . import reference as reference
+from . import (
+    body as body,
+    capytaine_mesh as capytaine_mesh,
+    convergence as convergence,
+    database as database,
+    reference as reference,
+    solve as solve,
+    summary as summary,
+)
+from .body import RigidBody as RigidBody, rigid_body as rigid_body
+from .capytaine_mesh import (
+    INSTALL_HINT as INSTALL_HINT,
+    read_mesh as read_mesh,
+    require_capytaine as require_capytaine,
+    symmetric_capytaine_mesh as symmetric_capytaine_mesh,
+)
+from .convergence import mesh_convergence as mesh_convergence
+from .database import (
+    BEMDrift as BEMDrift,
+    bem_drift as bem_drift,
+    box_barge_drift as box_barge_drift,
+    qtf_attrs as qtf_attrs,
+    qtf_from_bem as qtf_from_bem,
+    rao as rao,
+)
 from .meshes import (
     HullMesh as HullMesh,
     barge2_mesh as barge2_mesh,
@@ -29,23 +53,7 @@ from .meshes import (
     raked_barge_mesh as raked_barge_mesh,
     vertical_cylinder_mesh as vertical_cylinder_mesh,
 )
-from .solve import (
-    INSTALL_HINT as INSTALL_HINT,
-    BEMDrift as BEMDrift,
-    RigidBody as RigidBody,
-    bem_drift as bem_drift,
-    box_barge_drift as box_barge_drift,
-    far_field_drift as far_field_drift,
-    mesh_convergence as mesh_convergence,
-    qtf_attrs as qtf_attrs,
-    qtf_from_bem as qtf_from_bem,
-    rao as rao,
-    read_mesh as read_mesh,
-    require_capytaine as require_capytaine,
-    rigid_body as rigid_body,
-    solve_frequency as solve_frequency,
-    symmetric_capytaine_mesh as symmetric_capytaine_mesh,
-)
+from .solve import far_field_drift as far_field_drift, solve_frequency as solve_frequency
 
 
 def available() -> bool:

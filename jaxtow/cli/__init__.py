@@ -30,6 +30,11 @@ from __future__ import annotations
 import argparse
 import os
 import sys
+from pathlib import Path
+
+from filelock import FileLock, Timeout
+
+import jaxtow as jt
 
 from . import (
     bem,
@@ -44,6 +49,7 @@ from . import (
     study,
     tow,
 )
+from ._manifest import Manifest, up_to_date
 
 #: One module per subcommand, each with ``add_parser(sub)``; the order of ``jaxtow --help``.
 SUBCOMMANDS = (
@@ -90,8 +96,6 @@ def main(argv=None) -> int:
     fingerprint = getattr(args, "fingerprint", None)
     request = fingerprint(args) if fingerprint is not None else None
     if request is not None and not getattr(args, "force", False):
-        from ._manifest import up_to_date
-
         done = up_to_date(out, request)
         if done is not None:
             print(
@@ -104,19 +108,15 @@ def main(argv=None) -> int:
             return 0
     import matplotlib
 
-    from .._compile_cache import enable_compile_cache
-
     if not (no_cache or args.no_compile_cache):
         try:
-            enable_compile_cache()
+            jt.enable_compile_cache()
         except ValueError as e:
             raise SystemExit(f"error: {e}") from None
 
     matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
     manifest = None
     if out is not None:
-        from ._manifest import Manifest
-
         manifest = Manifest(out, args, argv, request=request)
         manifest.start()
     status, error = "failed", None
@@ -167,31 +167,36 @@ def error_message(e: BaseException) -> str:
 
 
 def _lock_output(out):
-    """Create the output folder and hold an exclusive lock on it for the run, so that two
-    runs into one folder cannot overwrite each other's files: the second stops at once with
-    a message (POSIX; elsewhere no lock). None where the command has no --out."""
+    """Create the output folder and hold an exclusive lock on it for the run (filelock's
+    `FileLock` on ``.jaxtow.lock``, removed when the run ends), so that two runs into one
+    folder cannot overwrite each other's files: the second stops at once with a message.
+    None where the command has no --out."""
     if out is None:
         return None
-    from pathlib import Path
-
     path = Path(out)
     if path.exists() and not path.is_dir():
         raise SystemExit(f"error: --out {out} is a file; give a folder for the outputs")
     path.mkdir(parents=True, exist_ok=True)
+    lock = FileLock(path / ".jaxtow.lock", is_singleton=False)
     try:
-        import fcntl
-    except ImportError:  # not POSIX
-        return None
-    f = open(path / ".jaxtow.lock", "w")
-    try:
-        fcntl.flock(f, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except BlockingIOError:
-        f.close()
+        lock.acquire(timeout=0)
+    except Timeout:
         raise SystemExit(
             f"error: another jaxtow run is writing into {path}; wait for it to finish or "
             "give another --out"
         ) from None
-    return f
+    return _Held(lock)
+
+
+class _Held:
+    """A held lock, released by ``close`` (the run's end)."""
+
+    def __init__(self, lock: FileLock):
+        self.lock = lock
+
+    def close(self) -> None:
+        self.lock.release()
+        Path(self.lock.lock_file).unlink(missing_ok=True)  # no empty lock file left behind
 
 
 if __name__ == "__main__":

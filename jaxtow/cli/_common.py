@@ -4,12 +4,17 @@ from __future__ import annotations
 
 import argparse
 import math
+import sys
 from pathlib import Path
 
 import numpy as np
 
+import jaxtow as jt
 
-def _grid(spec, name):
+from .tow import load_tow
+
+
+def grid_option(spec, name):
     """LO HI N from the command line: N points from LO to HI (messages name the option)."""
     lo, hi, n = spec
     try:
@@ -47,7 +52,6 @@ def _parse_sets(items):
 def _tow_names(args, command: str) -> list:
     """The tow names or files of a subcommand (``--tow``/``--tows``; the old ``--vessel`` /
     ``--vessels`` flags and spellings are accepted with a deprecation message)."""
-    import sys
 
     old = getattr(args, "vessel_old", None) or getattr(args, "vessels_old", None)
     if old:
@@ -65,9 +69,6 @@ def _model(args, tow_name=None, overrides=None, command: str = ""):
     """(model, tow name): the tow's calm-water model with the command line's overrides
     (``--u-tug`` rescales EA' as `jaxtow.at_tug_speed`; ``--l0``, ``--xp``, ``--EA`` and
     ``--set NAME=VALUE`` set parameters)."""
-    import jaxtow as jt
-
-    from .tow import load_tow
 
     command = command or getattr(args, "command", "")
     name = tow_name or _tow_names(args, command)[0]
@@ -85,10 +86,9 @@ def _model(args, tow_name=None, overrides=None, command: str = ""):
             k: getattr(args, k) for k in ("l0", "xp", "EA") if getattr(args, k, None) is not None
         }
         sets.update(overrides or {})
-        from .._parameters import check_values
 
         for k, v in sets.items():
-            check_values(model, k, v)
+            jt._parameters.check_values(model, k, v)
         return (jt.with_parameters(model, **sets) if sets else model), tow.name
     except ValueError as e:
         raise SystemExit(f"error: {e}") from None
@@ -96,7 +96,6 @@ def _model(args, tow_name=None, overrides=None, command: str = ""):
 
 def _tow_option(p, multiple: bool = False, default=("barge2a",)):
     """``--tow TOW`` (or ``--tows TOW ...``) and the hidden deprecated ``--vessel(s)``."""
-    import argparse
 
     if multiple:
         p.add_argument(
@@ -152,25 +151,29 @@ def _common(p):
 
 def _time_domain(model, vname, args, out: Path) -> dict:
     """Run from the thesis's initial condition, write figures and the run; return metrics."""
-    from .._metrics import fishtail_metrics, force_history, trajectory
-    from .._simulate import initial_state, simulate
-    from ..plotting.calm import save
-    from ..plotting.timedomain import plot_force_history, plot_phase_portraits, plot_time_traces
 
     try:
-        y0 = initial_state(model, psi0=math.radians(args.psi0), y0=args.y0)
-        sim = simulate(model, y0, t1=args.t1, n_save=args.n_save, solver=args.solver)
+        y0 = jt.initial_state(model, psi0=math.radians(args.psi0), y0=args.y0)
+        sim = jt.simulate(model, y0, t1=args.t1, n_save=args.n_save, solver=args.solver)
     except ValueError as e:
         raise SystemExit(f"error: {e}") from None
-    met = fishtail_metrics(model, sim)
-    traj = trajectory(model, sim)
+    met = jt.fishtail_metrics(model, sim)
+    traj = jt.trajectory(model, sim)
     title = (
         f"{model.vessel.name}: xp'={float(model.towline.xp)}, l0'={float(model.towline.l0)}, "
         f"psi0={args.psi0} deg, y0'={args.y0}"
     )
-    save(plot_time_traces(traj, title), out / f"{vname}_time_traces.png")
-    save(plot_phase_portraits(traj, title), out / f"{vname}_phase_portraits.png")
-    save(plot_force_history(force_history(model, sim), title), out / f"{vname}_forces.png")
+    jt.plotting.save(
+        jt.plotting.timedomain.plot_time_traces(traj, title), out / f"{vname}_time_traces.png"
+    )
+    jt.plotting.save(
+        jt.plotting.timedomain.plot_phase_portraits(traj, title),
+        out / f"{vname}_phase_portraits.png",
+    )
+    jt.plotting.save(
+        jt.plotting.timedomain.plot_force_history(jt.force_history(model, sim), title),
+        out / f"{vname}_forces.png",
+    )
     flags = {k: np.asarray(v) for k, v in sim.validity.items()}
     np.savez(
         out / f"{vname}_run.npz",

@@ -20,13 +20,15 @@ import json
 import platform
 import time
 from datetime import UTC, datetime
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
+
+import jaxtow as jt
 
 NAME = "jaxtow_run.json"
 
 
 def _versions() -> dict:
-    from importlib.metadata import PackageNotFoundError, version
 
     out = {"python": platform.python_version()}
     for pkg in ("jaxtow", "jax", "jaxlib", "equinox", "diffrax", "optimistix", "numpy", "xarray"):
@@ -52,14 +54,13 @@ class Manifest:
         self.path = Path(out) / NAME
         self.t0 = time.time()
         options = {k: _plain(v) for k, v in vars(args).items() if k not in ("func", "fingerprint")}
-        from ..presets import ASSUMPTIONS
 
         self.record = {
             "command": args.command,
             "argv": ["jaxtow", *argv],
             "options": options,
             "versions": _versions(),
-            "estimates": {k: dict(v) for k, v in ASSUMPTIONS.items()},
+            "estimates": {k: dict(v) for k, v in jt.presets.ASSUMPTIONS.items()},
             "started": _now(),
             "finished": None,
             "status": "running",
@@ -97,9 +98,8 @@ class Manifest:
         return found
 
     def _write(self) -> None:
-        from ..io._atomic import atomic_path
 
-        with atomic_path(self.path) as tmp:
+        with jt.io._atomic.atomic_path(self.path) as tmp:
             tmp.write_text(json.dumps(self.record, indent=2, default=str) + "\n")
 
 

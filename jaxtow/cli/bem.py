@@ -11,15 +11,22 @@ RAOs (B.2, B.3), the QTFs (4.3c, 4.4c, 4.5a, B.4) and the near-field parts (2.11
 
 from __future__ import annotations
 
+import hashlib
 import json
 import math
+import sys
+import tomllib
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 
 import numpy as np
 
+import jaxtow as jt
+
 from ..io._atomic import save_figure, save_netcdf, write_file
 from ._common import positive_float, positive_int
 from ._config import config_dispatch, config_text, read_config as _read_config
+from .tow import load_tow
 
 BUILTIN = {"barge1": "bem_barge1.toml", "barge2": "bem_barge2.toml"}
 _KEYS = {
@@ -34,7 +41,7 @@ def read_config(config) -> dict:
     return _read_config(config, BUILTIN)
 
 
-def _grid(spec, name):
+def _config_grid(spec, name):
     if not (isinstance(spec, list) and len(spec) == 3 and int(spec[2]) >= 1):
         raise ValueError(f"config [waves] {name}: expected [start, stop, count], got {spec!r}")
     return np.linspace(float(spec[0]), float(spec[1]), int(spec[2]))
@@ -42,7 +49,6 @@ def _grid(spec, name):
 
 def build(cfg: dict, panel_size: float | None = None):
     """(mesh builder panel_size -> HullMesh, default panel size, omega, beta [rad], bem_drift keywords)."""
-    from .. import bem
 
     for sec, allowed in _KEYS.items():
         extra = set(cfg.get(sec, {})) - allowed
@@ -60,7 +66,7 @@ def build(cfg: dict, panel_size: float | None = None):
     if kind == "box":
 
         def builder(p):
-            return bem.raked_barge_mesh(
+            return jt.bem.raked_barge_mesh(
                 float(h.get("length", 76.2)),
                 float(h.get("breadth", 24.4)),
                 float(h.get("draft", 5.0)),
@@ -72,17 +78,17 @@ def build(cfg: dict, panel_size: float | None = None):
     elif kind == "barge2":
 
         def builder(p):
-            return bem.barge2_mesh(h.get("draft"), panel_size=p, grading=grading)
+            return jt.bem.barge2_mesh(h.get("draft"), panel_size=p, grading=grading)
     elif kind == "file":
         if "path" not in h:
             raise ValueError("config [hull] kind = 'file' needs path = 'mesh file'")
 
         def builder(p):
-            return bem.read_mesh(h["path"], panel_size=p)
+            return jt.bem.read_mesh(h["path"], panel_size=p)
     else:
         raise ValueError(f"config [hull] kind: 'box', 'barge2' or 'file', got {kind!r}")
-    omega = _grid(w.get("omega", [0.05, 2.5, 61]), "omega")
-    beta = np.radians(_grid(w.get("beta_deg", [0, 180, 25]), "beta_deg"))
+    omega = _config_grid(w.get("omega", [0.05, 2.5, 61]), "omega")
+    beta = np.radians(_config_grid(w.get("beta_deg", [0, 180, 25]), "beta_deg"))
     depth = w.get("water_depth", "inf")
     depth = math.inf if str(depth).lower() in ("inf", "infinity") else float(depth)
     kw = dict(
@@ -95,10 +101,8 @@ def build(cfg: dict, panel_size: float | None = None):
 
 
 def cmd_bem(args):
-    from .. import bem
-
     try:
-        bem.require_capytaine()
+        jt.bem.require_capytaine()
     except ImportError as e:
         raise SystemExit(f"jaxtow bem: {e}") from None
     try:
@@ -110,86 +114,66 @@ def cmd_bem(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     cache = Path(args.cache) if args.cache else out / "cache"
-    from ..plotting.bem import plot_bem_qtf, plot_mesh_convergence, plot_nearfield_parts, plot_rao
-
     if args.convergence:
-        sizes = [float(s) for s in args.convergence.split(",")]
-        runs, summary = bem.mesh_convergence(
-            builder, sizes, omega, beta, cache_dir=cache, progress=not args.quiet, **kw
-        )
-        save_netcdf(summary, out / "convergence.nc")
-        save_figure(plot_mesh_convergence(summary, runs), out / "fig_B1_convergence.png", dpi=120)
-        print(
-            summary.near_vs_far.to_dataframe().unstack("zone").to_string()
-            if hasattr(summary, "to_dataframe")
-            else summary
-        )
-        print(f"wrote convergence.nc and fig_B1_convergence.png to {out}")
+        _convergence(args, builder, omega, beta, cache, kw, out)
         return
     mesh = builder(size)
     print(
         f"{mesh.name}: {mesh.n_panels} hull panels + {len(mesh.lid_faces)} lid panels, {omega.size} frequencies "
         f"x {beta.size} headings"
     )
-    ds = bem.bem_drift(mesh, omega, beta, cache_dir=cache, progress=not args.quiet, **kw)
+    ds = jt.bem.bem_drift(mesh, omega, beta, cache_dir=cache, progress=not args.quiet, **kw)
     save_netcdf(ds, out / "bem.nc")
     bad = ds.omega.values[~ds.resolved.values]
     if bad.size:
         print(
             f"warning: {bad.size} frequencies from {bad.min():.2f} rad/s have fewer than "
-            f"{bem.solve.MIN_PANELS_PER_WAVELENGTH:g} panels per wavelength (dataset variable 'resolved'); "
+            f"{jt.bem.solve.MIN_PANELS_PER_WAVELENGTH:g} panels per wavelength (dataset variable 'resolved'); "
             "use a smaller --panel-size"
         )
-    from .._units import RHO_SEA, G
-    from ..io import save_qtf
-
     sym = bool(np.isclose(float(beta[0]), 0.0))
-    summary = {
-        "mesh": mesh.name,
-        "n_panels": mesh.n_panels,
-        "panel_size_m": mesh.panel_size,
-        "capytaine_version": ds.attrs["capytaine_version"],
-        "assumptions": json.loads(ds.attrs["assumptions"]),
-    }
     for method in ("far_field", "near_field"):
-        q = bem.qtf_from_bem(ds, method, symmetric=sym)
-        save_qtf(q, out / f"qtf_{method}.nc", attrs=bem.qtf_attrs(ds, method))
-    L = float(np.ptp(mesh.vertices[:, 0]))
-    B = float(np.ptp(mesh.vertices[:, 1]))
-    head = ds.sel(beta=float(beta[0]))
-    summary["short_wave_surge_head_seas"] = {
-        m: float(head[m].sel(component="fx").isel(omega=-1)) / (RHO_SEA * G * B)
-        for m in ("far_field", "near_field")
-    }
-    from ..drift._compare import relative_mse_by_zone
-
-    for c in ("fx", "fy"):
-        summary[f"near_vs_far_{c}"] = relative_mse_by_zone(
-            ds.near_field.sel(component=c).values,
-            ds.far_field.sel(component=c).values,
-            np.repeat(ds.omega.values[:, None], beta.size, 1),
-            L,
-        )
+        q = jt.bem.qtf_from_bem(ds, method, symmetric=sym)
+        jt.io.save_qtf(q, out / f"qtf_{method}.nc", attrs=jt.bem.qtf_attrs(ds, method))
+    summary = jt.bem.summary.bem_summary(ds, mesh)
     write_file(out / "summary.json", json.dumps(summary, indent=2))
+    _figures(ds, beta, out)
+    keys = ("short_wave_surge_head_seas", "near_vs_far_fx", "near_vs_far_fy")
+    print(json.dumps({k: summary[k] for k in keys}, indent=1))
+    print(f"wrote bem.nc, qtf_far_field.nc, qtf_near_field.nc, figures and summary.json to {out}")
+
+
+def _convergence(args, builder, omega, beta, cache, kw, out: Path) -> None:
+    """``--convergence``: the drift at several panel sizes (thesis fig. B.1)."""
+    sizes = [float(s) for s in args.convergence.split(",")]
+    runs, summary = jt.bem.mesh_convergence(
+        builder, sizes, omega, beta, cache_dir=cache, progress=not args.quiet, **kw
+    )
+    save_netcdf(summary, out / "convergence.nc")
+    save_figure(
+        jt.plotting.bem.plot_mesh_convergence(summary, runs),
+        out / "fig_B1_convergence.png",
+        dpi=120,
+    )
+    print(
+        summary.near_vs_far.to_dataframe().unstack("zone").to_string()
+        if hasattr(summary, "to_dataframe")
+        else summary
+    )
+    print(f"wrote convergence.nc and fig_B1_convergence.png to {out}")
+
+
+def _figures(ds, beta, out: Path) -> None:
+    """RAOs, QTFs and near-field parts at up to three headings of the solve."""
     bds = [float(np.degrees(b)) for b in beta[:: max(1, beta.size // 3)]][:3]
     for bd in sorted(set([bds[0], 15.0 if np.any(np.isclose(np.degrees(beta), 15)) else bds[-1]])):
-        save_figure(plot_rao(ds, bd), out / f"fig_rao_beta{bd:g}.png", dpi=110)
-    save_figure(plot_bem_qtf(ds, bds), out / "fig_qtf.png", dpi=110)
+        save_figure(jt.plotting.bem.plot_rao(ds, bd), out / f"fig_rao_beta{bd:g}.png", dpi=110)
+    save_figure(jt.plotting.bem.plot_bem_qtf(ds, bds), out / "fig_qtf.png", dpi=110)
     save_figure(
-        plot_nearfield_parts(ds, bds[min(1, len(bds) - 1)]),
+        jt.plotting.bem.plot_nearfield_parts(ds, bds[min(1, len(bds) - 1)]),
         out / "fig_nearfield_parts.png",
         dpi=110,
     )
-    print(
-        json.dumps(
-            {
-                k: summary[k]
-                for k in ("short_wave_surge_head_seas", "near_vs_far_fx", "near_vs_far_fy")
-            },
-            indent=1,
-        )
-    )
-    print(f"wrote bem.nc, qtf_far_field.nc, qtf_near_field.nc, figures and summary.json to {out}")
 
 
 def add_parser(sub):
@@ -233,9 +217,6 @@ def fingerprint(args) -> str | None:
     finished run into the same folder recorded the same digest and its outputs are all
     there, the command has nothing to do (`jaxtow.cli._manifest.up_to_date`). None (always
     run) for a tow file, a config that cannot be read, or ``--show-config``."""
-    import hashlib
-    import tomllib
-    from importlib.metadata import PackageNotFoundError, version
 
     spec = TOW_CONFIGS.get(args.config, args.config)
     if args.show_config or (spec not in BUILTIN and not Path(str(spec)).is_file()):
@@ -272,7 +253,6 @@ def fingerprint(args) -> str | None:
 
 
 def _dispatch(args):
-    import sys
 
     if args.config == "barge2":
         print(
@@ -293,7 +273,6 @@ def _dispatch(args):
 def _tow_file_config(spec):
     """The panel config of a tow file whose [hull] has a mesh (None for anything else: a
     built-in name or a panel config)."""
-    import tomllib
 
     path = Path(str(spec))
     if str(spec) in BUILTIN or not path.is_file():
@@ -304,7 +283,6 @@ def _tow_file_config(spec):
         return None
     if "vessel" not in data:  # a panel config
         return None
-    from .tow import load_tow
 
     tow = load_tow(spec, "bem")
     mesh = tow.drift_spec

@@ -7,24 +7,22 @@ from pathlib import Path
 
 import numpy as np
 
+import jaxtow as jt
+
 from ..io._atomic import write_file
 from ._common import (
     _common,
-    _grid,
     _model,
     _parse_sets,
     _time_domain,
     _time_domain_options,
     _tow_names,
     _tow_option,
+    grid_option,
 )
 
 
 def cmd_calm(args):
-    import jaxtow as jt
-
-    from ..io import save_dataset
-    from ..plotting.calm import plot_equilibria_vs, plot_max_real_vs, plot_stability_map, save
 
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -34,34 +32,38 @@ def cmd_calm(args):
     for name in _tow_names(args, "calm"):
         model, vname = _model(args, name, sets, "calm")
         c = float(model.vessel.stability_coefficient())
-        ds_xp = jt.sweep(model, {"xp": _grid(args.xp_grid, "xp-grid")}, **opts)
-        ds_l0 = jt.sweep(model, {"l0": _grid(args.l0_grid, "l0-grid")}, **opts)
+        ds_xp = jt.sweep(model, {"xp": grid_option(args.xp_grid, "xp-grid")}, **opts)
+        ds_l0 = jt.sweep(model, {"l0": grid_option(args.l0_grid, "l0-grid")}, **opts)
         ds_map = jt.sweep(
-            model, {"xp": _grid(args.map_xp, "map-xp"), "l0": _grid(args.map_l0, "map-l0")}, **opts
+            model,
+            {"xp": grid_option(args.map_xp, "map-xp"), "l0": grid_option(args.map_l0, "map-l0")},
+            **opts,
         )
         for tag, ds in (
             ("equilibria_vs_xp", ds_xp),
             ("max_real_vs_l0", ds_l0),
             ("map_xp_l0", ds_map),
         ):
-            save_dataset(ds, out / f"{vname}_{tag}.nc")
-        save(
-            plot_equilibria_vs(
+            jt.io.save_dataset(ds, out / f"{vname}_{tag}.nc")
+        jt.plotting.save(
+            jt.plotting.plot_equilibria_vs(
                 ds_xp,
                 "xp",
                 title=f"{model.vessel.name}: equilibria (fig. 6.3), l0'={float(model.towline.l0):g}",
             ),
             out / f"{vname}_equilibria_vs_xp.png",
         )
-        save(
-            plot_max_real_vs(
+        jt.plotting.save(
+            jt.plotting.plot_max_real_vs(
                 ds_l0,
                 "l0",
                 title=f"{model.vessel.name}: max Re(lambda), xp'={float(model.towline.xp):g} (fig. 6.4)",
             ),
             out / f"{vname}_max_real_vs_l0.png",
         )
-        save(plot_stability_map(ds_map, "xp", "l0"), out / f"{vname}_map_xp_l0.png")
+        jt.plotting.save(
+            jt.plotting.plot_stability_map(ds_map, "xp", "l0"), out / f"{vname}_map_xp_l0.png"
+        )
         # Summary numbers at the configured (xp, l0).
         eqs = jt.equilibria(model)
         st = jt.stability(model, eqs.state)

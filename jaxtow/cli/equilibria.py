@@ -6,11 +6,12 @@ import math
 
 import numpy as np
 
+import jaxtow as jt
+
 from ._common import _common, _model, _parse_sets, _tow_option
 
 
 def cmd_equilibria(args):
-    import jaxtow as jt
 
     model, _ = _model(args, overrides=_parse_sets(args.set))
     eqs = jt.equilibria(model)

@@ -2,29 +2,27 @@
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
-from ._common import _common, _grid, _model, _parse_sets, _tow_option
+import jaxtow as jt
+
+from ._common import _common, _model, _parse_sets, _tow_option, grid_option
 
 
 def cmd_map(args):
-    import jaxtow as jt
-
-    from ..io import save_dataset
-    from ..plotting.calm import plot_equilibria_vs, plot_max_real_vs, plot_stability_map, save
 
     if not args.param:
         raise SystemExit("error: give at least one --param NAME LO HI N")
     model, tow_name = _model(args, overrides=_parse_sets(args.set))
     grid = {}
     for name, lo, hi, n in args.param:
-        grid[name] = _grid((lo, hi, n), f"param {name}")
+        grid[name] = grid_option((lo, hi, n), f"param {name}")
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     stem = tow_name + "_" + "_".join(grid)
     # finished chunks are kept here while the sweep runs: an interrupted map resumes
     checkpoint = out / f".{stem}.chunks"
-    import shutil
 
     def run():
         return jt.sweep(
@@ -48,14 +46,18 @@ def cmd_map(args):
             ds = run()
     except ValueError as e:
         raise SystemExit(f"error: {e}") from None
-    save_dataset(ds, out / f"{stem}.nc")
+    jt.io.save_dataset(ds, out / f"{stem}.nc")
     shutil.rmtree(checkpoint, ignore_errors=True)
     names = list(grid)
     if len(names) == 1:
-        save(plot_equilibria_vs(ds, names[0]), out / f"{stem}_equilibria.png")
-        save(plot_max_real_vs(ds, names[0]), out / f"{stem}_max_real.png")
+        jt.plotting.save(
+            jt.plotting.plot_equilibria_vs(ds, names[0]), out / f"{stem}_equilibria.png"
+        )
+        jt.plotting.save(jt.plotting.plot_max_real_vs(ds, names[0]), out / f"{stem}_max_real.png")
     elif len(names) == 2:
-        save(plot_stability_map(ds, names[0], names[1]), out / f"{stem}_map.png")
+        jt.plotting.save(
+            jt.plotting.plot_stability_map(ds, names[0], names[1]), out / f"{stem}_map.png"
+        )
     n_unstable = int(((ds["stability"] == 1) & ds["valid"]).sum())
     print(f"{ds.sizes}: {n_unstable} unstable equilibria; wrote {out / (stem + '.nc')}")
 

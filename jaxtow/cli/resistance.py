@@ -5,12 +5,17 @@ from __future__ import annotations
 
 import json
 import math
+import sys
+import tomllib
 from pathlib import Path
 
 import numpy as np
 
+import jaxtow as jt
+
 from ..io._atomic import write_file
 from ._config import config_dispatch, read_config as _read_config
+from .tow import load_tow
 
 NM = 1852.0  # m
 TONNE_FORCE = 9.80665e3  # N
@@ -52,8 +57,6 @@ def _unknown(section: str, got: dict, allowed: set):
 
 def build(cfg: dict):
     """(tow, tug, sea states, heading [rad], route length [m] or None) from a parsed config."""
-    from .. import presets, resistance as R
-    from ..drift import METHODS
 
     for key in ("tow", "tug", "sea_state"):
         if key not in cfg:
@@ -77,24 +80,20 @@ def build(cfg: dict):
         )
     drift = tow_c.get("wave_drift", "near_field")
     kw = dict(wind_height=tow_c.get("wind_height"))
-    if isinstance(drift, str) and drift in METHODS:
+    if isinstance(drift, str) and drift in jt.drift.METHODS:
         kw["method"] = drift
     else:
-        from ..presets import drift_source
-
-        kw["qtf"], kw["drift_source"] = drift_source(drift)
+        kw["qtf"], kw["drift_source"] = jt.presets.drift_source(drift)
         kw["form"] = tow_c.get("sailing_form", "aranha")
     if "wind_table" in tow_c:
-        from ..io.resistance import read_coefficient_table
-
-        kw["wind_table"] = read_coefficient_table(tow_c["wind_table"])
-    tow = presets.barge2_resistance(vessel.split("_")[1], **kw)
+        kw["wind_table"] = jt.io.read_coefficient_table(tow_c["wind_table"])
+    tow = jt.presets.barge2_resistance(vessel.split("_")[1], **kw)
     eff = dict(
         efficiency=tug_c.get("efficiency", 1.0),
         resistance_coefficient=tug_c.get("resistance_coefficient", 0.0),
     )
     if "speeds" in tug_c or "pulls_t" in tug_c:
-        tug = R.Tug.from_table(
+        tug = jt.resistance.Tug.from_table(
             tug_c["speeds"], np.asarray(tug_c["pulls_t"], float) * TONNE_FORCE, **eff
         )
     else:
@@ -102,7 +101,7 @@ def build(cfg: dict):
             raise ValueError(
                 "config [tug]: give bollard_pull_t and free_speed, or speeds and pulls_t"
             )
-        tug = R.Tug(
+        tug = jt.resistance.Tug(
             bollard_pull=float(tug_c["bollard_pull_t"]) * TONNE_FORCE,
             free_speed=tug_c["free_speed"],
             **eff,
@@ -116,7 +115,7 @@ def build(cfg: dict):
                 kw[k] = math.radians(s[f"{k}_deg"])
         if "hs" not in kw or "tp" not in kw:
             raise ValueError(f"config [[sea_state]] {i + 1}: hs and tp are required")
-        seas.append(R.SeaState(**kw, name=s.get("name", f"sea state {i + 1}")))
+        seas.append(jt.resistance.SeaState(**kw, name=s.get("name", f"sea state {i + 1}")))
     route = cfg.get("route", {})
     _unknown("route", route, {"length_nm", "length_m"})
     length = route["length_nm"] * NM if "length_nm" in route else route.get("length_m")
@@ -132,9 +131,8 @@ def format_table(rows: list, tug, route_length) -> str:
         f"top speed {float(tug.max_speed):g} m/s"
         + (f"; route {route_length / NM:g} nm" if route_length else "")
     )
-    from ..studies import resistance_table
 
-    cols, body = resistance_table(rows)
+    cols, body = jt.studies.resistance_table(rows)
     table = [list(cols), *body]
     notes = [f"! {r['sea_state']}: {r['message']}" for r in rows if r["message"]]
     width = [max(len(row[j]) for row in table) for j in range(len(cols))]
@@ -157,17 +155,11 @@ def inputs(spec):
     """(tow, tug, sea states, heading, route) from a tow file or built-in tow (barge2a,
     barge2b), or from an old resistance config (the built-in ``barge2`` or a file with
     [tow] vessel = ...), which is deprecated."""
-    import sys
-
-    from ..tow import BUILTIN_TOWS, canonical_name
-    from .tow import load_tow
 
     spec = str(spec)
     old = spec in BUILTIN
-    if not old and canonical_name(spec)[0] not in BUILTIN_TOWS:
+    if not old and jt.tow.canonical_name(spec)[0] not in jt.tow.BUILTIN_TOWS:
         try:
-            import tomllib
-
             cfg = tomllib.loads(Path(spec).read_text()) if Path(spec).is_file() else {}
         except (tomllib.TOMLDecodeError, OSError):
             cfg = {}
@@ -195,71 +187,20 @@ def inputs(spec):
 
 
 def cmd_resistance(args):
-    import jax.numpy as jnp
-
-    from .. import resistance as R
-    from ..io import resistance_dataset, save_dataset
-    from ..plotting.calm import save
-    from ..plotting.resistance import plot_budget_vs_speed, plot_budget_vs_tp, plot_operating_point
-    from ..studies import evaluate_resistance as evaluate
-    from ..waves import physical_tp_range
-
     tow, tug, seas, heading, route = inputs(args.config)
-    rows = [evaluate(tow, tug, s, heading, route) for s in seas]
-    print(format_table(rows, tug, route))
+    study = jt.studies.resistance_study(tow, tug, seas, heading, route)
+    print(format_table(study.rows, tug, route))
     notes = [f"  - {k}: {n}" for k, n in tow.assumed]
     print("\nresults depend on these estimates / ILLUSTRATIVE inputs:\n" + "\n".join(notes))
     if not args.out:
         return
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    tps = jnp.linspace(5.0, 16.0, 45)
-    speeds = jnp.linspace(0.0, min(3.5, float(tug.max_speed)), 15)
-    for i, sea in enumerate(seas):
-        grid_speeds = jnp.unique(jnp.concatenate([speeds, jnp.array([0.0, 2.0])]))
-        ds = resistance_dataset(
-            R.resistance_grid(tow, sea, grid_speeds, tps, heading=heading, tug=tug),
-            grid_speeds,
-            tps,
-            tow=tow,
-            sea=sea,
-        )
+    for sea in seas:
         tag = sea.name.replace(" ", "_")
-        save_dataset(ds, out / f"resistance_{tag}.nc")
-        rng = (
-            tuple(float(t) for t in physical_tp_range(float(sea.hs))) if float(sea.hs) > 0 else None
-        )
-        save(
-            plot_budget_vs_tp(
-                ds,
-                speeds=[0.0] if i == 0 else [0.0, 2.0],
-                tp_range=rng,
-                title=f"{tow.name}: {sea.name}, Hs = {float(sea.hs):g} m, wind {float(sea.wind_speed):g} m/s "
-                "(figs 7.2/7.3)",
-            )[0],
-            out / f"budget_vs_tp_{tag}.png",
-        )
-        tp_fig = 7.0 if rng is None or rng[0] <= 7.0 <= rng[1] else float(sea.tp)
-        save(
-            plot_budget_vs_speed(
-                ds, tp_fig, title=f"{tow.name}: {sea.name}, Tp = {tp_fig:g} s (fig. 7.4)"
-            )[0],
-            out / f"budget_vs_speed_{tag}.png",
-        )
-        u = jnp.linspace(0.0, float(tug.max_speed), 80)
-        b = R.resistance_grid(tow, sea, u, jnp.array([float(sea.tp)]), heading=heading, tug=tug)
-        r = rows[i]
-        pt = (r["operating_speed"], r["pull"]) if "operating_speed" in r else None
-        save(
-            plot_operating_point(
-                np.asarray(u),
-                np.asarray(tug.pull(u)),
-                {"total": np.asarray(b.total[:, 0])},
-                pt,
-                title=f"{tow.name}: {sea.name} (fig. 2.1)",
-            ),
-            out / f"operating_point_{tag}.png",
-        )
+        jt.io.save_dataset(study.budgets[sea.name], out / f"resistance_{tag}.nc")
+    for stem, ax in jt.plotting.resistance.resistance_figures(study).items():
+        jt.plotting.save(ax, out / f"{stem}.png")
     summary = dict(
         tow=tow.name,
         assumed=dict(tow.assumed),
@@ -269,7 +210,7 @@ def cmd_resistance(args):
             efficiency=float(tug.efficiency),
         ),
         route_length_m=route,
-        sea_states=rows,
+        sea_states=study.rows,
     )
     write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     print(f"wrote figures, NetCDF datasets and summary.json to {out}")
@@ -296,11 +237,8 @@ def add_parser(sub):
 
 
 def _dispatch(args):
-    from ..tow import BUILTIN_TOWS, canonical_name
 
-    if args.show_config and canonical_name(str(args.config))[0] in BUILTIN_TOWS:
-        from .tow import load_tow
-
+    if args.show_config and jt.tow.canonical_name(str(args.config))[0] in jt.tow.BUILTIN_TOWS:
         print(load_tow(args.config, "resistance").show())
         return
     config_dispatch("resistance", BUILTIN, cmd_resistance)(args)

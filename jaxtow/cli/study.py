@@ -7,17 +7,13 @@ import json
 import sys
 from pathlib import Path
 
+import jaxtow as jt
+
 from ..io._atomic import write_file
 from .tow import load_tow
 
 
 def cmd_study(args):
-    import jaxtow as jt
-
-    from ..io import save_dataset
-    from ..plotting.tow import png_bytes, study_figures
-    from ..reports import tow_report_html
-    from ..studies import tow_study
 
     tow = load_tow(args.tow, "study")
     out = Path(args.out)
@@ -33,19 +29,21 @@ def cmd_study(args):
     if args.no_time_domain:
         kw["time_domain"] = False
     try:
-        study = tow_study(tow, progress=not args.quiet, **kw)
+        study = jt.studies.tow_study(tow, progress=not args.quiet, **kw)
     except ValueError as e:
         raise SystemExit(f"jaxtow study: error: {e}") from None
     if not args.quiet:
         print("[report] figures and files ...", file=sys.stderr)
     for name, ds in study.datasets.items():
-        save_dataset(ds, out / f"{tow.name}_{name}.nc")
-    figs = {k: png_bytes(f) for k, f in study_figures(study).items()}
+        jt.io.save_dataset(ds, out / f"{tow.name}_{name}.nc")
+    figs = {
+        k: jt.plotting.tow.png_bytes(f) for k, f in jt.plotting.tow.study_figures(study).items()
+    }
     for k, b in figs.items():
         write_file(out / f"{tow.name}_{k}.png", b)
     write_file(out / f"{tow.name}_summary.json", json.dumps(study.summary, indent=2, default=float))
     report = out / f"{tow.name}_report.html"
-    write_file(report, tow_report_html(study.summary, figs, version=jt.__version__))
+    write_file(report, jt.reports.tow_report_html(study.summary, figs, version=jt.__version__))
     s = study.summary
     print(f"{tow.name}: {s.get('description', '')}")
     if "calm" in s:

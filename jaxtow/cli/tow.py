@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import sys
+import warnings
 from pathlib import Path
+
+import jaxtow as jt
 
 from ..io._atomic import write_file
 
@@ -10,19 +14,15 @@ from ..io._atomic import write_file
 def load_tow(spec, command: str):
     """The `jaxtow.tow.Tow` of a built-in name or a file, with a one-line error (and the
     deprecation message for an old spelling) on stderr."""
-    import sys
-    import warnings
 
-    from ..tow import TowFileError, canonical_name, load
-
-    name, msg = canonical_name(str(spec))
+    name, msg = jt.tow.canonical_name(str(spec))
     if msg:
         print(f"jaxtow {command}: warning: {msg}", file=sys.stderr)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
-            tow = load(name)
-        except TowFileError as e:
+            tow = jt.tow.load(name)
+        except jt.tow.TowFileError as e:
             raise SystemExit(f"jaxtow {command}: error: {e}") from None
     for w in caught:
         if not issubclass(w.category, DeprecationWarning):
@@ -35,12 +35,11 @@ def cmd_show(args):
 
 
 def cmd_new(args):
-    from ..tow import template
 
     out = Path(args.file)
     if out.exists() and not args.force:
         raise SystemExit(f"jaxtow tow new: error: {out} exists (use --force to overwrite)")
-    write_file(out, template())
+    write_file(out, jt.tow.template())
     print(f"wrote a commented tow-file template to {out}; check it with: jaxtow tow show {out}")
 
 

@@ -36,7 +36,7 @@ from __future__ import annotations
 import equinox as eqx
 import jax.numpy as jnp
 
-from .. import _rules as V
+from .._rules import check_finite, check_positive
 from .._special import r_function
 from .._units import RHO_SEA, G
 from ._damping import encounter_frequency
@@ -149,10 +149,10 @@ def bluntness(wl: Waterline, beta):
 
 def _inputs(omega, beta, u, v):
     omega, beta, u, v = (jnp.asarray(a, dtype=float) for a in (omega, beta, u, v))
-    V.check_positive("omega", omega)
-    V.check_finite("beta", beta)
-    V.check_finite("u", u)
-    V.check_finite("v", v)
+    check_positive("omega", omega)
+    check_finite("beta", beta)
+    check_finite("u", u)
+    check_finite("v", v)
     return jnp.broadcast_arrays(omega, beta, u, v)
 
 

@@ -29,7 +29,7 @@ import equinox as eqx
 import jax.numpy as jnp
 import numpy as np
 
-from .. import _rules as V
+from .._rules import POSITIVE
 
 _TOL = 1e-9
 
@@ -195,9 +195,9 @@ def waterline(
     fl = _per_segment("flare", flare, n)
     if np.any(np.abs(fl) >= 0.5 * math.pi):
         raise ValueError("parameter 'flare' must lie in (-pi/2, pi/2) rad")
-    V.POSITIVE.check("draft", draft)  # before it becomes the default local draft
+    POSITIVE.check("draft", draft)  # before it becomes the default local draft
     ld = _per_segment("local_draft", draft if local_draft is None else local_draft, n)
-    V.POSITIVE.check("local_draft", ld)
+    POSITIVE.check("local_draft", ld)
     area2 = np.sum(p[:, 0] * np.roll(p[:, 1], -1) - np.roll(p[:, 0], -1) * p[:, 1])
     if area2 < 0:  # clockwise: reverse vertices, and the per-segment values with them
         p = p[::-1].copy()

@@ -8,10 +8,10 @@ import dataclasses
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
-from .. import _rules as V
+from .._rules import FINITE, Checked, is_concrete, rule_field
 
 
-class AbstractExternalForce(V.Checked):
+class AbstractExternalForce(Checked):
     """Hook for environmental forces (waves, wind, current) on the towed vessel.
 
     ``__call__(t, y, model)`` returns the non-dimensional body-axis forces
@@ -49,10 +49,10 @@ class ConstantBodyForce(AbstractExternalForce):
     """A constant body-axis force (X', Y', N'), e.g. a mean drift force in a fixed heading
     frame or a test load."""
 
-    force: Float[Array, "3"] = V.rule_field(rule=V.FINITE)
+    force: Float[Array, "3"] = rule_field(rule=FINITE)
 
     def __check_init__(self):
-        if V.is_concrete(self.force) and jnp.shape(self.force) != (3,):
+        if is_concrete(self.force) and jnp.shape(self.force) != (3,):
             raise ValueError(f"parameter 'force' must have shape (3,), got {jnp.shape(self.force)}")
 
     def __call__(self, t, y, model):

@@ -10,8 +10,8 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
-from .. import _rules as V
 from .._interp import cell_index
+from .._rules import NONNEGATIVE, POSITIVE, check_type, rule_field
 from .._units import G, Scales
 from ..drift._damping import encounter_frequency, sailing_validity
 from ..drift._methods import FROUDE_MAX
@@ -48,8 +48,8 @@ class WaveDriftForce(AbstractExternalForce):
     """
 
     qtf: QTF
-    omega: jnp.ndarray = V.rule_field(rule=V.POSITIVE)
-    zeta_a: jnp.ndarray = V.rule_field(rule=V.NONNEGATIVE)
+    omega: jnp.ndarray = rule_field(rule=POSITIVE)
+    zeta_a: jnp.ndarray = rule_field(rule=NONNEGATIVE)
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")
     yaw_rate: bool = eqx.field(static=True, default=True)
@@ -57,8 +57,8 @@ class WaveDriftForce(AbstractExternalForce):
 
     def __check_init__(self):
         check_form(self.form)
-        V.check_type("qtf", self.qtf, QTF)
-        V.check_type("scales", self.scales, Scales)
+        check_type("qtf", self.qtf, QTF)
+        check_type("scales", self.scales, Scales)
 
     def dimensional(self, y: Float[Array, "6"]) -> Float[Array, "3"]:
         """(Fx [N], Fy [N], Nz [N·m]) at non-dimensional state y."""
@@ -95,7 +95,7 @@ class IrregularWaveDriftForce(AbstractExternalForce):
 
     qtf: QTF
     spectrum: AbstractSpectrum
-    omega: jnp.ndarray = V.rule_field(rule=V.POSITIVE)
+    omega: jnp.ndarray = rule_field(rule=POSITIVE)
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")
     yaw_rate: bool = eqx.field(static=True, default=True)
@@ -103,8 +103,8 @@ class IrregularWaveDriftForce(AbstractExternalForce):
 
     def __check_init__(self):
         check_form(self.form)
-        V.check_type("qtf", self.qtf, QTF)
-        V.check_type("scales", self.scales, Scales)
+        check_type("qtf", self.qtf, QTF)
+        check_type("scales", self.scales, Scales)
 
         check_ascending(self.omega)
 
@@ -186,8 +186,8 @@ class SlowDriftForce(AbstractExternalForce):
 
     qtf: QTF
     spectrum: AbstractSpectrum
-    omega: jnp.ndarray = V.rule_field(rule=V.POSITIVE)
-    domega: jnp.ndarray = V.rule_field(rule=V.POSITIVE)
+    omega: jnp.ndarray = rule_field(rule=POSITIVE)
+    domega: jnp.ndarray = rule_field(rule=POSITIVE)
     phase: jnp.ndarray
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")

@@ -5,7 +5,7 @@ from __future__ import annotations
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
-from .. import _rules as V
+from .._rules import FINITE, NONNEGATIVE, rule_field
 from .._units import Scales
 from ..resistance._flow import OCIMFLoad, relative_flow
 from ._base import AbstractExternalForce
@@ -24,8 +24,8 @@ class WindForce(AbstractExternalForce):
     rate's effect on the apparent wind is neglected (quasi-steady loads)."""
 
     load: OCIMFLoad
-    speed: jnp.ndarray = V.rule_field(rule=V.NONNEGATIVE, converter=_float)
-    angle: jnp.ndarray = V.rule_field(rule=V.FINITE, converter=_float, default=0.0)
+    speed: jnp.ndarray = rule_field(rule=NONNEGATIVE, converter=_float)
+    angle: jnp.ndarray = rule_field(rule=FINITE, converter=_float, default=0.0)
     scales: Scales = None  # type: ignore[assignment]  # required: checked below
 
     def __check_init__(self):

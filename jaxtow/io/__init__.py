@@ -1,4 +1,8 @@
-"""File formats and labelled results (xarray / NetCDF). Numerical modules never import this."""
+"""File formats and labelled results, one module a format: `dataset` (sweep results as
+NetCDF), `qtf_files` (jaxtow's QTF files and `read_qtf`, any drift file by its content),
+`wamit`, `capytaine`, `resistance` (coefficient tables, resistance budgets), `design`,
+`drift_methods`, `waterline`, `checkpoint` (a sweep's chunks). Numerical modules never
+import this."""
 
 from typing import TYPE_CHECKING
 
@@ -7,6 +11,11 @@ from .._lazy import attach as _attach
 # loaded on first use (`jaxtow._lazy`): the command line's file helpers in `jaxtow.io._atomic`
 # do not load xarray
 if TYPE_CHECKING:
+    from ._tables import complete_table as complete_table
+    from .capytaine import (
+        qtf_from_capytaine as qtf_from_capytaine,
+        read_capytaine_drift as read_capytaine_drift,
+    )
     from .checkpoint import Checkpoint as Checkpoint
     from .dataset import (
         load_dataset as load_dataset,
@@ -16,20 +25,15 @@ if TYPE_CHECKING:
     )
     from .design import design_dataset as design_dataset, sensitivity_dataset as sensitivity_dataset
     from .drift_methods import drift_methods_dataset as drift_methods_dataset
+    from .qtf_files import load_qtf as load_qtf, read_qtf as read_qtf, save_qtf as save_qtf
     from .resistance import (
         read_coefficient_table as read_coefficient_table,
         resistance_dataset as resistance_dataset,
     )
     from .wamit import (
-        complete_table as complete_table,
-        load_qtf as load_qtf,
-        qtf_from_capytaine as qtf_from_capytaine,
-        read_capytaine_drift as read_capytaine_drift,
         read_drift_file as read_drift_file,
-        read_qtf as read_qtf,
         read_wamit_drift as read_wamit_drift,
         read_wamit_qtf as read_wamit_qtf,
-        save_qtf as save_qtf,
         write_wamit_drift as write_wamit_drift,
         write_wamit_qtf as write_wamit_qtf,
     )

@@ -8,7 +8,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .._units import RHO_SEA, G
-from ..bem.solve import rao
+from ..bem.database import rao
 
 _LABELS = {
     "fx": "Fx / (rho g zeta_a^2 B)",

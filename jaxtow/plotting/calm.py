@@ -5,7 +5,6 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-from ..io._atomic import save_figure
 from .waves_report import hatch_invalid
 
 BRANCH_STYLE = {
@@ -86,10 +85,3 @@ def plot_stability_map(ds, x: str, y: str, branch: int = 0, ax=None, title: str 
     ax.set_ylabel(f"{y}' [-]")
     ax.set_title(title or f"{ds.attrs.get('vessel', '')}: {BRANCH_STYLE[branch][0]}", fontsize=9)
     return ax
-
-
-def save(fig_or_ax, path):
-    fig = fig_or_ax.figure if hasattr(fig_or_ax, "figure") else fig_or_ax
-    fig.tight_layout()
-    save_figure(fig, path, dpi=120)
-    plt.close(fig)

@@ -6,6 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .._units import RHO_SEA, G
+from ..studies._drift import SWAY_METHODS, TP
 
 ZONE_COLOURS = ("0.95", "0.88", "0.80")
 NORMALISATION = {
@@ -97,3 +98,58 @@ def plot_irregular_methods(
     ax.set_title(title or f"irregular seas, Hs = {hs} m", fontsize=9)
     ax.legend(fontsize=6, ncol=2)
     return ax
+
+
+def drift_study_figures(study) -> dict:
+    """The figures of a `jaxtow.studies.DriftMethodsStudy` (thesis figs 4.3-4.6, 5.6, 5.7):
+    file stem → an Axes of the figure."""
+    wl, hs, deg = study.waterline, study.hs, np.degrees(study.sway_heading)
+    norm_x, norm_y = study.normalisation
+    irr = study.irregular
+    figs = {
+        "fig4_3_stationary_surge": plot_drift_methods(
+            study.head, "fx", title=f"{wl.name}: stationary surge, beta = 0 (fig. 4.3)"
+        ),
+        "fig4_4_stationary_sway": plot_drift_methods(
+            study.oblique, "fy", title=f"{wl.name}: stationary sway, beta = {deg:g} deg (fig. 4.4)"
+        ),
+        "fig4_5_irregular_surge": plot_irregular_methods(
+            TP,
+            {k: v[0] for k, v in irr.items()},
+            hs,
+            0,
+            norm_x,
+            study.tp_range,
+            title=f"{wl.name}: stationary surge in JONSWAP, Hs = {hs} m, beta = 0 (fig. 4.5)",
+            ylabel="Fx / (rho g B Hs^2/8)",
+        ),
+        "fig4_6_irregular_sway": plot_irregular_methods(
+            TP,
+            {k: irr[k][1] for k in SWAY_METHODS},
+            hs,
+            1,
+            norm_y,
+            study.tp_range,
+            title=f"{wl.name}: stationary sway in JONSWAP, Hs = {hs} m (fig. 4.6)",
+            ylabel="Fy / (rho g L Hs^2/8)",
+        ),
+    }
+    for tag, comp, beta, stem in (
+        ("surge", "fx", 0.0, "fig5_6_sailing_surge"),
+        ("sway", "fy", study.sway_heading, "fig5_7_sailing_sway"),
+    ):
+        fig, axes = plt.subplots(2, 3, figsize=(13, 7), sharex=True)
+        for ax, (name, dss) in zip(axes.ravel(), study.sailing[tag].items()):
+            plot_drift_methods(
+                dss,
+                comp,
+                ax=ax,
+                labels=[f"{'u' if tag == 'surge' else 'v'} = {s:g} m/s" for s in study.speeds],
+                title=name,
+            )
+        fig.suptitle(
+            f"{wl.name}: sailing {tag}, beta = {np.degrees(beta):g} deg (figs 5.6/5.7)",
+            fontsize=10,
+        )
+        figs[stem] = axes[0, 0]
+    return figs

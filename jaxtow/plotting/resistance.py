@@ -115,3 +115,30 @@ def plot_operating_point(speeds, pull, resist, point=None, ax=None, title: str =
     ax.legend(fontsize=8)
     ax.set_title(title, fontsize=9)
     return ax
+
+
+def resistance_figures(study) -> dict:
+    """The figures of a `jaxtow.studies.ResistanceStudy` per sea state: the budget over Tp
+    (figs 7.2, 7.3), over speed (fig. 7.4) and the operating point (fig. 2.1); file stem →
+    an Axes of the figure."""
+    tow, figs = study.tow, {}
+    for i, sea in enumerate(study.seas):
+        ds, tag, rng = study.budgets[sea.name], sea.name.replace(" ", "_"), study.tp_range(sea)
+        figs[f"budget_vs_tp_{tag}"] = plot_budget_vs_tp(
+            ds,
+            speeds=[0.0] if i == 0 else [0.0, 2.0],
+            tp_range=rng,
+            title=f"{tow.name}: {sea.name}, Hs = {float(sea.hs):g} m, wind {float(sea.wind_speed):g} m/s "
+            "(figs 7.2/7.3)",
+        )[0]
+        tp_fig = 7.0 if rng is None or rng[0] <= 7.0 <= rng[1] else float(sea.tp)
+        figs[f"budget_vs_speed_{tag}"] = plot_budget_vs_speed(
+            ds, tp_fig, title=f"{tow.name}: {sea.name}, Tp = {tp_fig:g} s (fig. 7.4)"
+        )[0]
+        u, pull, total = study.curves[sea.name]
+        r = study.rows[i]
+        pt = (r["operating_speed"], r["pull"]) if "operating_speed" in r else None
+        figs[f"operating_point_{tag}"] = plot_operating_point(
+            u, pull, {"total": total}, pt, title=f"{tow.name}: {sea.name} (fig. 2.1)"
+        )
+    return figs

@@ -6,6 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .._metrics import trajectory
+from ..studies import outside_validity, straight, valid_count
 
 
 def _note(ax, note):
@@ -114,3 +115,104 @@ def plot_with_without(l0, calm, waves: dict, *, title="", note=""):
     ax.set_title(title, fontsize=9)
     _note(ax, note)
     return fig
+
+
+def wave_study_figures(study) -> dict:
+    """The figures of a `jaxtow.studies.WaveStudy` (its primary drift source and form):
+    file stem → an Axes of the figure. Maps, equilibrium counts and headings of Barge 2a
+    and 2b (thesis figs 6.13-6.28), and the time-domain runs (figs 6.20-6.22, 7.5)."""
+    figs = {}
+    for v in ("2a", "2b"):
+        figs.update(_version_figures(study, v))
+    omega, tps = study.axes["omega"], study.axes["tp"]
+    for tag, y, ylab, fig in (
+        ("omega", omega, "omega [rad/s]", "6.13"),
+        ("tp", tps, "Tp [s]", "6.23"),
+    ):
+        figs[f"barge_2a_heading_xp_{tag}"] = plot_heading_map(
+            study.xp_grid,
+            y,
+            straight(study.maps_xp[tag], "psi"),
+            "x_p' [-]",
+            ylabel=ylab,
+            title=f"Barge 2a: heading nearest straight behind (fig. {fig})",
+            invalid=outside_validity(study.maps_xp[tag]),
+        )
+    runs = {k: (m, sim) for k, (m, sim, _) in study.runs.items()}
+    figs["barge_2a_time_domain"] = plot_runs(
+        runs, title=f"Barge 2a, l0' = 2.5, zeta_a = {study.zeta_a} m (figs 6.20-6.22, 7.5)"
+    )
+    return figs
+
+
+def _version_figures(study, v: str) -> dict:
+    """The maps of Barge ``v`` over (l0', ω), (ζa, ω), (l0', Tp) and (U_tug, ω)."""
+    src, za, ax = study.source, study.zeta_a, study.axes
+    l0, omega, tps = ax["l0"], ax["omega"], ax["tp"]
+    figs = {}
+    ds = study.maps_l0_omega[v]
+    figs[f"barge_{v}_map_l0_omega"] = plot_max_real_map(
+        l0,
+        omega,
+        straight(ds),
+        title=f"Barge {v}: max Re lambda, straight behind, zeta_a = {za} m (figs 6.17-6.19)",
+        note=src,
+        invalid=outside_validity(ds),
+    )
+    mp = straight(ds)
+    picks = {
+        f"omega = {omega[k]:.2f} rad/s": mp[:, k]
+        for k in sorted({int(np.argmin(np.abs(omega - w))) for w in (0.5, 0.8, 1.0, 1.5)})
+    }
+    figs[f"barge_{v}_with_without_waves"] = plot_with_without(
+        l0,
+        study.calm[v],
+        picks,
+        title=f"Barge {v}: with and without waves, zeta_a = {za} m (figs 6.27-6.28)",
+        note=src,
+    )
+    ds = study.equilibria_zeta_omega[v]
+    figs[f"barge_{v}_equilibria_zeta_omega"] = plot_count_map(
+        study.zeta_grid,
+        omega,
+        valid_count({"valid": ds["valid"].values}),
+        title=f"Barge {v}: number of equilibria, l0' = 2.5 (calm: {study.calm_counts[v]})",
+        note=src,
+    )
+    figs[f"barge_{v}_heading_zeta_omega"] = plot_heading_map(
+        study.zeta_grid,
+        omega,
+        straight(ds, "psi"),
+        "zeta_a [m]",
+        title=f"Barge {v}: heading of the equilibrium nearest straight behind",
+        invalid=outside_validity(ds),
+    )
+    ds = study.maps_l0_tp[v]
+    figs[f"barge_{v}_map_l0_tp"] = plot_max_real_map(
+        l0,
+        tps,
+        straight(ds),
+        ylabel="Tp [s]",
+        title=f"Barge {v}: max Re lambda, Hs = {study.hs} m (fig. 6.26)",
+        note=src,
+        invalid=outside_validity(ds),
+    )
+    ds = study.maps_utug_omega[v]
+    figs[f"barge_{v}_map_utug_omega"] = plot_max_real_map(
+        study.tug_speeds,
+        omega,
+        straight(ds),
+        xlabel="U_tug [m/s]",
+        title=f"Barge {v}: max Re lambda over tug speed, l0' = 2.5, zeta_a = {za} m",
+        note=src,
+        invalid=outside_validity(ds),
+    )
+    figs[f"barge_{v}_heading_utug_omega"] = plot_heading_map(
+        study.tug_speeds,
+        omega,
+        straight(ds, "psi"),
+        "U_tug [m/s]",
+        title=f"Barge {v}: heading nearest straight behind over tug speed",
+        invalid=outside_validity(ds),
+    )
+    return figs

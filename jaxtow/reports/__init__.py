@@ -8,8 +8,23 @@ from typing import TYPE_CHECKING
 from .._lazy import attach as _attach
 
 if TYPE_CHECKING:
+    from ._claims import (
+        SOURCE_NAMES as SOURCE_NAMES,
+        SOURCES as SOURCES,
+        attribution_text as attribution_text,
+        claims_markdown as claims_markdown,
+        claims_table as claims_table,
+    )
     from ._html import SECTIONS as REPORT_SECTIONS, tow_report_html as tow_report_html
 
-__all__ = ["REPORT_SECTIONS", "tow_report_html"]
+__all__ = [
+    "SOURCE_NAMES",
+    "SOURCES",
+    "attribution_text",
+    "claims_markdown",
+    "claims_table",
+    "REPORT_SECTIONS",
+    "tow_report_html",
+]
 
 __getattr__, __dir__ = _attach(__name__, __file__)

@@ -9,8 +9,8 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
-from .. import _rules as V
 from .._interp import hermite
+from .._rules import POSITIVE, Checked, rule_field
 from .._vessel import Vessel
 
 RHO_AIR = 1.225  # kg/m³, ISO standard atmosphere at sea level
@@ -110,7 +110,7 @@ class CoefficientTable(eqx.Module):
         return hermite(self.angle, self.values, _wrap(alpha), "periodic")
 
 
-class ManoeuvringCoefficients(V.Checked):
+class ManoeuvringCoefficients(Checked):
     """Current / calm-water coefficients from the vessel's slow-motion manoeuvring derivatives
     (the thesis's fig. 7.1b): a flow from α relative to the bow is the vessel moving through
     still water with (u', v', r') = (cos α, sin α, 0) on the scale U_r, so on the OCIMF areas
@@ -119,8 +119,8 @@ class ManoeuvringCoefficients(V.Checked):
     Head current: C_x = −R0 L/B (−0.218 for Barge 2a)."""
 
     vessel: Vessel
-    length: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
-    breadth: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
+    length: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
+    breadth: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
     label: str = eqx.field(static=True, default="manoeuvring derivatives")
     illustrative: bool = eqx.field(static=True, default=False)
 
@@ -129,7 +129,7 @@ class ManoeuvringCoefficients(V.Checked):
         return jnp.stack([X * self.length / self.breadth, Y, N])
 
 
-class OCIMFLoad(V.Checked):
+class OCIMFLoad(Checked):
     """A flow load of OCIMF form (eqs 2.25-2.27): ``coefficients`` (a `CoefficientTable` or
     `ManoeuvringCoefficients`), fluid density ``rho`` [kg/m³], vessel ``length`` L and
     ``breadth`` B [m] and the ``height`` H [m] of the exposed area (above-water height for
@@ -138,10 +138,10 @@ class OCIMFLoad(V.Checked):
     body velocity (u, v)."""
 
     coefficients: CoefficientTable | ManoeuvringCoefficients
-    rho: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
-    length: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
-    breadth: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
-    height: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
+    rho: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
+    length: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
+    breadth: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
+    height: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
 
     def __call__(
         self, u: ArrayLike, v: ArrayLike, speed: ArrayLike, angle: ArrayLike

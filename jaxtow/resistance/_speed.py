@@ -8,8 +8,8 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
-from .. import _rules as V
 from .._roots import bisect, brackets
+from .._rules import check_positive, guard, is_concrete
 from .._units import G, froude_number
 from ..drift import FROUDE_MAX
 from ._budget import Budget, TowResistance, resistance
@@ -139,8 +139,8 @@ def operating_speed(
     says which and by how much (the `RESULTS` message under jit/grad); with ``throw=False``
     the result carries ``result`` (a `RESULTS` item) for maps over many sea states.
     """
-    if V.is_concrete(tug.bollard_pull):
-        V.check_positive("bollard_pull", tug.bollard_pull)
+    if is_concrete(tug.bollard_pull):
+        check_positive("bollard_pull", tug.bollard_pull)
     p = _operating_point(tow, tug, sea, jnp.asarray(heading, float), int(n_scan), float(rtol))
     if not throw:
         return p
@@ -149,5 +149,5 @@ def operating_speed(
         if msg is not None:
             raise ValueError(msg)
         return p
-    p = V.guard(p, tug.checks() + sea.checks())
+    p = guard(p, tug.checks() + sea.checks())
     return p.result.error_if(p, p.result != RESULTS.successful)

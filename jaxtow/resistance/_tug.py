@@ -5,15 +5,15 @@ from __future__ import annotations
 import jax.numpy as jnp
 import numpy as np
 
-from .. import _rules as V
 from .._interp import hermite
+from .._rules import NONNEGATIVE, POSITIVE, Checked, in_range, rule_field
 
 
 def _float(x):
     return jnp.asarray(x, dtype=float)
 
 
-class Tug(V.Checked):
+class Tug(Checked):
     """The tug's available pull against speed.
 
     Quadratic pull curve (default): P(U) = BP (1 − (U/U_free)²) with the bollard pull
@@ -25,18 +25,14 @@ class Tug(V.Checked):
     thesis's fig. 2.1).
     """
 
-    bollard_pull: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
-    free_speed: jnp.ndarray = V.rule_field(rule=V.POSITIVE, converter=_float)
-    efficiency: jnp.ndarray = V.rule_field(
-        rule=V.in_range(1e-12, 1.0), converter=_float, default=1.0
-    )
-    resistance_coefficient: jnp.ndarray = V.rule_field(
-        rule=V.NONNEGATIVE, converter=_float, default=0.0
+    bollard_pull: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
+    free_speed: jnp.ndarray = rule_field(rule=POSITIVE, converter=_float)
+    efficiency: jnp.ndarray = rule_field(rule=in_range(1e-12, 1.0), converter=_float, default=1.0)
+    resistance_coefficient: jnp.ndarray = rule_field(
+        rule=NONNEGATIVE, converter=_float, default=0.0
     )
     speeds: jnp.ndarray | None = None
-    pulls: jnp.ndarray | None = V.rule_field(
-        rule=V.NONNEGATIVE, converter=lambda x: x, default=None
-    )
+    pulls: jnp.ndarray | None = rule_field(rule=NONNEGATIVE, converter=lambda x: x, default=None)
 
     @classmethod
     def from_table(cls, speeds, pulls, *, efficiency=1.0, resistance_coefficient=0.0):

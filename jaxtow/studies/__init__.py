@@ -6,7 +6,9 @@ tow (`tow_study`, the command ``jaxtow study``). Each returns numbers and result
 Modules: `_claims` (each thesis claim as a function of a study's arrays), `_maps` (the
 stability maps of the wave study and their reductions), `_forms` (the forward-speed forms of
 the drift compared), `_waves` (`WaveStudy`, the attribution of claims), `_resistance` (one sea
-state's resistance summary), `_assessment` (the assessment of one tow).
+state's resistance summary), `_assessment` (the assessment of one tow), `_drift` (the
+waterline drift methods compared, ``jaxtow drift``), `_bifurcation` (branches and limit
+cycles in one parameter, ``jaxtow bifurcation``).
 """
 
 from typing import TYPE_CHECKING
@@ -15,9 +17,14 @@ from .._lazy import attach as _attach
 
 if TYPE_CHECKING:
     from ._assessment import (
+        VERDICTS as VERDICTS,
         TowStudy as TowStudy,
         tow_study as tow_study,
         verdict as verdict,
+    )
+    from ._bifurcation import (
+        BifurcationStudy as BifurcationStudy,
+        bifurcation_study as bifurcation_study,
     )
     from ._claims import (
         BAND_OMEGA_MAX as BAND_OMEGA_MAX,
@@ -36,6 +43,11 @@ if TYPE_CHECKING:
         time_domain_agrees_with_linear as time_domain_agrees_with_linear,
         waves_reduce_path_width as waves_reduce_path_width,
     )
+    from ._drift import (
+        SWAY_METHODS as SWAY_METHODS,
+        DriftMethodsStudy as DriftMethodsStudy,
+        drift_methods_study as drift_methods_study,
+    )
     from ._forms import (
         forms_table as forms_table,
         sailing_forms as sailing_forms,
@@ -44,14 +56,19 @@ if TYPE_CHECKING:
         MAP_NAMES as MAP_NAMES,
         map_axes as map_axes,
         nearest_straight as nearest_straight,
+        outside_validity as outside_validity,
         run_map as run_map,
         straight as straight,
         valid_count as valid_count,
+        validity_share as validity_share,
         verdict_change as verdict_change,
         verdict_maps as verdict_maps,
     )
     from ._resistance import (
+        BUDGET_TP as BUDGET_TP,
+        ResistanceStudy as ResistanceStudy,
         evaluate as evaluate_resistance,
+        resistance_study as resistance_study,
         resistance_table as resistance_table,
     )
     from ._waves import (
@@ -68,12 +85,19 @@ if TYPE_CHECKING:
     )
 
 __all__ = [
+    "BifurcationStudy",
+    "bifurcation_study",
+    "SWAY_METHODS",
+    "DriftMethodsStudy",
+    "drift_methods_study",
     "forms_table",
     "sailing_forms",
     "MAP_NAMES",
     "map_axes",
     "run_map",
     "straight",
+    "outside_validity",
+    "validity_share",
     "verdict_change",
     "verdict_maps",
     "nearest_straight",
@@ -105,6 +129,10 @@ __all__ = [
     "waves_reduce_path_width",
     "evaluate_resistance",
     "resistance_table",
+    "BUDGET_TP",
+    "ResistanceStudy",
+    "resistance_study",
+    "VERDICTS",
     "TowStudy",
     "tow_study",
     "verdict",

@@ -16,7 +16,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from .. import resistance as R
+from .. import resistance
 from .._dynamics import all_valid, validity
 from .._equilibrium import equilibria
 from .._metrics import fishtail_metrics, trajectory
@@ -201,7 +201,7 @@ def _strength_record(tow, model, summary):
     return out
 
 
-def _grid(spec):
+def _linspace(spec):
     lo, hi, n = spec
     return np.linspace(lo, hi, int(n))
 
@@ -221,54 +221,23 @@ def tow_study(
     and the speeds default to the tow file's ``[study]``; the keywords override them (the
     tests use small grids). Steps the tow cannot take (no manoeuvring model, no tug, no
     sea state) are listed in ``summary['skipped']`` with the reason."""
-
     opts = dict(tow.study)
-    map_xp = _grid(opts["map_xp"] if map_xp is None else map_xp)
-    map_l0 = _grid(opts["map_l0"] if map_l0 is None else map_l0)
+    map_xp = _linspace(opts["map_xp"] if map_xp is None else map_xp)
+    map_l0 = _linspace(opts["map_l0"] if map_l0 is None else map_l0)
     do_td = opts["time_domain"] if time_domain is None else time_domain
     t1 = opts["t1"] if t1 is None else t1
-    speeds = _grid(opts["speeds"] if speeds is None else speeds)
+    speeds = _linspace(opts["speeds"] if speeds is None else speeds)
     has_model = tow.vessel is not None and tow.towline is not None
-    seas = [s for s in tow.sea_states]
+    seas = list(tow.sea_states)
     res = TowStudy(tow)
-    skipped = {}
     n_steps = 1 + (
         has_model * (2 + bool(tow.tug) + (len(seas) if opts["sea_states"] else 0) + bool(do_td))
     )
     steps = Steps(n_steps, enabled=progress)
     q, desc = steps.run("wave drift of the hull", tow.drift)
-    sc = tow.scales
-    summary = dict(
-        tow=tow.name,
-        description=tow.resolved["tow"].get("description", ""),
-        source=tow.source,
-        design_speed=float(sc.u_tug),
-        length=sc.length,
-        breadth=float(tow.resolved["vessel"]["breadth"]),
-        draft=sc.draft,
-        drift_source=desc,
-        sailing_form=tow.form,
-        assumed=[list(a) for a in tow.assumed],
-        warnings=list(tow.warnings),
-    )
-    # head-sea drift of the hull and the mean drift in each sea state (no model needed)
-    w = np.asarray(q.omega)
-    fx = np.asarray(jax.vmap(lambda x: q(x, 0.0))(jnp.asarray(w))[:, 0])
-    res.drift_curves["head_sea_fx"] = (w, fx)
-    # Faltinsen's short-wave limit of head-sea surge drift on a wall-sided bow: ½ρgB
-    wall = 0.5 * RHO_SEA * G * float(tow.resolved["vessel"]["breadth"])
-    summary["head_sea_surge_at_highest_omega_over_wall_limit"] = float(-fx[-1] / wall)
-    drift_rows = []
-    for s in seas:
-        if float(s.hs) <= 0:
-            continue
-        S = Jonswap(hs=s.hs, tp=s.tp, gamma=s.gamma)(DEFAULT_OMEGA)
-        row = dict(sea_state=s.name, hs=float(s.hs), tp=float(s.tp))
-        for tag, u in (("stationary", 0.0), ("design_speed", float(sc.u_tug))):
-            F = irregular_sailing_drift(q, DEFAULT_OMEGA, S, 0.0, u, 0.0, form=tow.form)
-            row[f"fx_{tag}"] = float(F[0])
-        drift_rows.append(row)
-    summary["mean_drift"] = drift_rows
+    summary = _particulars(tow, desc)
+    summary.update(_hull_drift(tow, q, seas, res))
+    skipped: dict = {}
     if not has_model:
         skipped["stability, resistance and time domain"] = (
             "the tow file has no manoeuvring model ([vessel] derivatives or preset, and [towline])"
@@ -277,67 +246,130 @@ def tow_study(
         res.summary = summary
         return res
     model = tow.model()
-    line = model.towline
     summary["stability_coefficient_c"] = float(model.vessel.stability_coefficient())
-    summary["towline"] = dict(
+    summary["towline"] = _towline_record(model, tow)
+    if tow.tug is not None:
+        summary.update(_resistance(tow, seas, speeds, steps, res))
+    else:
+        skipped["resistance"] = "the tow file has no [tug]"
+    summary["calm"] = steps.run("equilibria and stability in calm water", _equilibria_record, model)
+    if opts["sea_states"]:
+        summary["sea_states"] = {s.name: _sea_state_record(tow, s, steps) for s in seas}
+    if tow.line_info:
+        summary["towline"]["strength"] = _strength_record(tow, model, summary)
+    summary["map"] = _map(model, map_xp, map_l0, progress, steps, res)
+    if do_td:
+        summary["time_domain"] = _time_domain(model, opts, t1, n_save, steps, res)
+    else:
+        skipped["time domain"] = "switched off in [study]"
+    summary["skipped"] = skipped
+    summary["step_times_s"] = steps.times
+    res.summary = summary
+    return res
+
+
+def _particulars(tow, drift_source: str) -> dict:
+    """The tow as the summary names it: its particulars, drift source, estimates, warnings."""
+    sc = tow.scales
+    return dict(
+        tow=tow.name,
+        description=tow.resolved["tow"].get("description", ""),
+        source=tow.source,
+        design_speed=float(sc.u_tug),
+        length=sc.length,
+        breadth=float(tow.resolved["vessel"]["breadth"]),
+        draft=sc.draft,
+        drift_source=drift_source,
+        sailing_form=tow.form,
+        assumed=[list(a) for a in tow.assumed],
+        warnings=list(tow.warnings),
+    )
+
+
+def _hull_drift(tow, q, seas, res: TowStudy) -> dict:
+    """The head-sea surge drift of the hull against the short-wave wall limit, and the
+    mean drift in each sea state at rest and at the design speed (no model needed)."""
+    w = np.asarray(q.omega)
+    fx = np.asarray(jax.vmap(lambda x: q(x, 0.0))(jnp.asarray(w))[:, 0])
+    res.drift_curves["head_sea_fx"] = (w, fx)
+    # Faltinsen's short-wave limit of head-sea surge drift on a wall-sided bow: ½ρgB
+    wall = 0.5 * RHO_SEA * G * float(tow.resolved["vessel"]["breadth"])
+    rows = []
+    for s in seas:
+        if float(s.hs) <= 0:
+            continue
+        S = Jonswap(hs=s.hs, tp=s.tp, gamma=s.gamma)(DEFAULT_OMEGA)
+        row = dict(sea_state=s.name, hs=float(s.hs), tp=float(s.tp))
+        for tag, u in (("stationary", 0.0), ("design_speed", float(tow.scales.u_tug))):
+            F = irregular_sailing_drift(q, DEFAULT_OMEGA, S, 0.0, u, 0.0, form=tow.form)
+            row[f"fx_{tag}"] = float(F[0])
+        rows.append(row)
+    return {
+        "head_sea_surge_at_highest_omega_over_wall_limit": float(-fx[-1] / wall),
+        "mean_drift": rows,
+    }
+
+
+def _towline_record(model, tow) -> dict:
+    line = model.towline
+    out = dict(
         l0=float(line.l0),
         xp=float(line.xp),
         yp=float(line.yp),  # pyright: ignore[reportAttributeAccessIssue]
         EA_nd=float(getattr(line, "series_EA", line.EA)),  # pyright: ignore[reportAttributeAccessIssue]
-        length_m=float(line.l0) * sc.length,
+        length_m=float(line.l0) * tow.scales.length,
     )
-
     if hasattr(line, "sag"):  # a line with weight: its catenary at the calm equilibrium
-        summary["towline"]["catenary"] = _catenary_record(model, tow.water_depth)
+        out["catenary"] = _catenary_record(model, tow.water_depth)
+    return out
 
-    # ---------------------------------------------------------------- resistance
-    if tow.tug is not None:
-        tr = tow.resistance()
 
-        def budget():
-            rows = [evaluate(tr, tow.tug, s, 0.0, tow.route_length) for s in seas]
-            for s in seas:
-                b = R.resistance_grid(tr, s, jnp.asarray(speeds), jnp.array([float(s.tp)]))
-                res.budgets[s.name] = dict(
-                    speeds=speeds,
-                    components=np.asarray(b.resistance[:, 0]),
-                    total=np.asarray(b.total[:, 0]),
-                    pull=np.asarray(tow.tug.pull(jnp.asarray(speeds))),
-                )
-            return rows
+def _resistance(tow, seas, speeds, steps: Steps, res: TowStudy) -> dict:
+    """Per sea state: the required pull, operating speed and transit time, and the budget
+    over the speeds (for the figures)."""
+    tr = tow.resistance()
 
-        summary["resistance"] = steps.run("resistance, bollard pull and operating speed", budget)
-        summary["components"] = list(R.COMPONENTS)
-        summary["tug"] = dict(
+    def budget():
+        rows = [evaluate(tr, tow.tug, s, 0.0, tow.route_length) for s in seas]
+        for s in seas:
+            b = resistance.resistance_grid(tr, s, jnp.asarray(speeds), jnp.array([float(s.tp)]))
+            res.budgets[s.name] = dict(
+                speeds=speeds,
+                components=np.asarray(b.resistance[:, 0]),
+                total=np.asarray(b.total[:, 0]),
+                pull=np.asarray(tow.tug.pull(jnp.asarray(speeds))),
+            )
+        return rows
+
+    return dict(
+        resistance=steps.run("resistance, bollard pull and operating speed", budget),
+        components=list(resistance.COMPONENTS),
+        tug=dict(
             bollard_pull=float(tow.tug.bollard_pull),
             free_speed=float(tow.tug.max_speed),
             efficiency=float(tow.tug.efficiency),
+        ),
+        route_length_m=tow.route_length,
+    )
+
+
+def _sea_state_record(tow, s, steps: Steps) -> dict:
+    rec = steps.run(
+        f"equilibria and stability in sea state {s.name!r}", _equilibria_record, tow.sea_model(s)
+    )
+    notes = []
+    if any(float(a) != 0.0 for a in (s.wave_angle, s.wind_angle)):
+        notes.append(
+            "waves and wind taken from ahead of the course in the stability model; "
+            "their directions enter the resistance budget only"
         )
-        summary["route_length_m"] = tow.route_length
-    else:
-        skipped["resistance"] = "the tow file has no [tug]"
+    rec.update(hs=float(s.hs), tp=float(s.tp), wind_speed=float(s.wind_speed), notes=notes)
+    return rec
 
-    # ---------------------------------------------------------------- stability
-    summary["calm"] = steps.run("equilibria and stability in calm water", _equilibria_record, model)
-    if opts["sea_states"]:
-        summary["sea_states"] = {}
-        for s in seas:
-            rec = steps.run(
-                f"equilibria and stability in sea state {s.name!r}",
-                _equilibria_record,
-                tow.sea_model(s),
-            )
-            notes = []
-            if any(float(a) != 0.0 for a in (s.wave_angle, s.wind_angle)):
-                notes.append(
-                    "waves and wind taken from ahead of the course in the stability model; "
-                    "their directions enter the resistance budget only"
-                )
-            rec.update(hs=float(s.hs), tp=float(s.tp), wind_speed=float(s.wind_speed), notes=notes)
-            summary["sea_states"][s.name] = rec
 
-    if tow.line_info:
-        summary["towline"]["strength"] = _strength_record(tow, model, summary)
+def _map(model, map_xp, map_l0, progress: bool, steps: Steps, res: TowStudy) -> dict:
+    """The calm-water stability map around the design point, and the share of it where the
+    straight-behind equilibrium is stable."""
 
     def stability_map():
         return sweep(model, {"xp": map_xp, "l0": map_l0}, progress=progress)
@@ -346,38 +378,33 @@ def tow_study(
     res.datasets["map_xp_l0"] = ds
     straight = ds["max_real"].where(ds["valid"] & (ds["branch"] == 0)).max("equilibrium")
     stable = (straight < 0).values
-    summary["map"] = dict(
+    return dict(
         xp=[float(map_xp[0]), float(map_xp[-1]), int(map_xp.size)],
         l0=[float(map_l0[0]), float(map_l0[-1]), int(map_l0.size)],
         straight_stable_share=float(np.mean(stable)),
     )
 
-    # ---------------------------------------------------------------- time domain
-    if do_td:
 
-        def run():
-            y0 = initial_state(model, psi0=math.radians(opts["psi0_deg"]), y0=opts["y0"])
-            sim = simulate(model, y0, t1=t1, n_save=n_save)
-            met = fishtail_metrics(model, sim)
-            flags = {k: bool(np.all(np.asarray(v))) for k, v in sim.validity.items()}
-            return trajectory(model, sim), met, flags
+def _time_domain(model, opts: dict, t1: float, n_save: int, steps: Steps, res: TowStudy) -> dict:
+    """The calm-water run from the [study]'s disturbed start, and its fishtailing metrics."""
 
-        traj, met, flags = steps.run("time-domain check from a disturbed start", run)
-        res.runs["calm"] = (traj, met)
-        summary["time_domain"] = dict(
-            psi0_deg=opts["psi0_deg"],
-            y0=opts["y0"],
-            t1=t1,
-            outcome=met["outcome"],
-            path_width=met["path_width"],
-            yaw_range=met["yaw_range"],
-            slewing_period=met["slewing_period"],
-            ended_early=bool(met["ended_early"]),
-            validity=flags,
-        )
-    else:
-        skipped["time domain"] = "switched off in [study]"
-    summary["skipped"] = skipped
-    summary["step_times_s"] = steps.times
-    res.summary = summary
-    return res
+    def run():
+        y0 = initial_state(model, psi0=math.radians(opts["psi0_deg"]), y0=opts["y0"])
+        sim = simulate(model, y0, t1=t1, n_save=n_save)
+        met = fishtail_metrics(model, sim)
+        flags = {k: bool(np.all(np.asarray(v))) for k, v in sim.validity.items()}
+        return trajectory(model, sim), met, flags
+
+    traj, met, flags = steps.run("time-domain check from a disturbed start", run)
+    res.runs["calm"] = (traj, met)
+    return dict(
+        psi0_deg=opts["psi0_deg"],
+        y0=opts["y0"],
+        t1=t1,
+        outcome=met["outcome"],
+        path_width=met["path_width"],
+        yaw_range=met["yaw_range"],
+        slewing_period=met["slewing_period"],
+        ended_early=bool(met["ended_early"]),
+        validity=flags,
+    )

@@ -51,6 +51,22 @@ def straight(ds, field: str = "max_real"):
     return nearest_straight({k: ds[k].values for k in ("valid", "psi", field)}, field)
 
 
+def outside_validity(ds):
+    """Where the equilibrium nearest straight behind is outside the physics' validity."""
+    return straight(ds, "physics_valid") == 0.0
+
+
+def validity_share(ds) -> dict:
+    """Share of the map points (with a straight-behind equilibrium) that meet each flag."""
+    out = {}
+    for k in ds.data_vars:
+        if (k.startswith("validity_") and ds[k].dtype == bool) or k == "physics_valid":
+            v = straight(ds, k)
+            has = np.isfinite(v)
+            out[k.removeprefix("validity_")] = float(np.mean(v[has] == 1.0)) if has.any() else None
+    return out
+
+
 def map_axes(n: int, hs: float = 2.4) -> dict:
     """The axes of `verdict_maps` for ``n`` points per axis (n // 2, at least 6, Tp values)."""
 

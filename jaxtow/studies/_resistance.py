@@ -4,25 +4,30 @@ transit time; SI)."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from functools import cached_property
+
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 
-from .. import resistance as R
+from .. import resistance
+from ..io import resistance_dataset
 from ..waves import physical_tp_range
 
 
 def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
     """Everything the table prints for one sea state (SI)."""
 
-    req = R.required_pull(tow, sea, heading=heading, tug=tug)
+    req = resistance.required_pull(tow, sea, heading=heading, tug=tug)
     out = dict(
         sea_state=sea.name,
         hs=float(sea.hs),
         tp=float(sea.tp),
         wind_speed=float(sea.wind_speed),
         current_speed=float(sea.current_speed),
-        hold_resistance=dict(zip(R.COMPONENTS, map(float, req.budget.resistance))),
+        hold_resistance=dict(zip(resistance.COMPONENTS, map(float, req.budget.resistance))),
         hold_towing_force=float(req.towing_force),
         required_bollard_pull=float(req.bollard_pull),
     )
@@ -30,7 +35,9 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
         lo, hi = (float(t) for t in physical_tp_range(float(sea.hs)))
         tps = jnp.linspace(lo, hi, n_tp)
         bp = jax.vmap(
-            lambda t: R.required_pull(tow, eqx_tp(sea, t), heading=heading, tug=tug).bollard_pull
+            lambda t: (
+                resistance.required_pull(tow, eqx_tp(sea, t), heading=heading, tug=tug).bollard_pull
+            )
         )(tps)
         k = int(jnp.argmax(bp))
         out.update(
@@ -38,17 +45,17 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
             worst_tp=float(tps[k]),
             worst_required_bollard_pull=float(bp[k]),
         )
-    p = R.operating_speed(tow, tug, sea, heading=heading, throw=False)
-    msg = R.status_message(p, tug, tow)
+    p = resistance.operating_speed(tow, tug, sea, heading=heading, throw=False)
+    msg = resistance.status_message(p, tug, tow)
     names = ("successful", "cannot_hold", "no_crossing", "froude_too_high")
-    status = next(n for n in names if bool(p.result == getattr(R.RESULTS, n)))
+    status = next(n for n in names if bool(p.result == getattr(resistance.RESULTS, n)))
     out.update(status=status, message=msg)
     if status in ("successful", "froude_too_high"):
         out.update(
             operating_speed=float(p.speed),
             froude=float(p.froude),
             pull=float(p.pull),
-            operating_resistance=dict(zip(R.COMPONENTS, map(float, p.budget.resistance))),
+            operating_resistance=dict(zip(resistance.COMPONENTS, map(float, p.budget.resistance))),
             overtaken_energy=float(p.budget.overtaken_energy),
         )
         if float(p.budget.overtaken_energy) > 1e-3:
@@ -118,3 +125,63 @@ def resistance_table(rows: list) -> tuple:
             ]
         )
     return TABLE_COLUMNS, table
+
+
+#: The Tp grid of the resistance budgets [s] (thesis figs 7.2, 7.3).
+BUDGET_TP = (5.0, 16.0, 45)
+
+
+@dataclass(frozen=True)
+class ResistanceStudy:
+    """What `resistance_study` computed: the table ``rows`` (one `evaluate` a sea state);
+    on first use, per sea state, its budget over (speed, Tp) as a dataset (``budgets``) and
+    the total resistance against the tug's pull over the tug's speeds (``curves``: speeds,
+    pull, total [N])."""
+
+    tow: resistance.TowResistance
+    tug: resistance.Tug
+    seas: tuple
+    heading: float
+    rows: list
+
+    def tp_range(self, sea):
+        """The physical Tp range of a sea state's Hs (None in calm water)."""
+        if float(sea.hs) <= 0:
+            return None
+        return tuple(float(t) for t in physical_tp_range(float(sea.hs)))
+
+    @cached_property
+    def budgets(self) -> dict:
+        tps = jnp.linspace(*BUDGET_TP)
+        speeds = jnp.linspace(0.0, min(3.5, float(self.tug.max_speed)), 15)
+        grid = jnp.unique(jnp.concatenate([speeds, jnp.array([0.0, 2.0])]))
+        return {
+            sea.name: resistance_dataset(
+                resistance.resistance_grid(
+                    self.tow, sea, grid, tps, heading=self.heading, tug=self.tug
+                ),
+                grid,
+                tps,
+                tow=self.tow,
+                sea=sea,
+            )
+            for sea in self.seas
+        }
+
+    @cached_property
+    def curves(self) -> dict:
+        out = {}
+        u = jnp.linspace(0.0, float(self.tug.max_speed), 80)
+        for sea in self.seas:
+            tp = jnp.array([float(sea.tp)])
+            b = resistance.resistance_grid(self.tow, sea, u, tp, heading=self.heading, tug=self.tug)
+            out[sea.name] = (np.asarray(u), np.asarray(self.tug.pull(u)), np.asarray(b.total[:, 0]))
+        return out
+
+
+def resistance_study(tow, tug, seas, heading: float = 0.0, route_length=None) -> ResistanceStudy:
+    """The resistance budget, required pull, operating speed and transit time of ``tow`` (a
+    `jaxtow.resistance.TowResistance`) behind ``tug`` in each of ``seas`` (``jaxtow
+    resistance``; thesis sections 7.1-7.2, fig. 2.1)."""
+    rows = [evaluate(tow, tug, s, heading, route_length) for s in seas]
+    return ResistanceStudy(tow, tug, tuple(seas), heading, rows)

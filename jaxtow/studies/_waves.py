@@ -34,7 +34,7 @@ from ..forces._wind import WindForce
 from ..presets import barge2_irregular_model, barge2_wave_model, drift_source
 from ..resistance import resistance_grid
 from ..waves import physical_tp_range
-from . import _claims as W
+from . import _claims as thesis_claims
 from ._maps import map_axes, run_map, straight, valid_count
 
 #: The stability claims of chapters 6.2-6.3 and 7.2.2, in report order.
@@ -209,6 +209,41 @@ class WaveStudy:
             for v in ("2a", "2b")
         }
 
+    @property
+    def tug_speeds(self):
+        """The tug speeds of the (U_tug, ω) maps [m/s]."""
+        return np.linspace(1.0, 3.0, max(self.n // 2, 6))
+
+    @cached_property
+    def maps_utug_omega(self) -> dict:
+        """{version: Dataset} over (U_tug, ω) at l0' = 2.5: the tug speed's effect."""
+        return {
+            v: self._map(
+                self.wave_model(v, l0=2.5),
+                {"u_tug": self.tug_speeds, "external.omega": self.axes["omega"]},
+            )
+            for v in ("2a", "2b")
+        }
+
+    @property
+    def xp_grid(self):
+        """The attachment points x_p' of the heading maps (figs 6.13, 6.23)."""
+        return np.linspace(0.05, 1.0, self.n)
+
+    @cached_property
+    def maps_xp(self) -> dict:
+        """Barge 2a's equilibria over (x_p', ω) in regular waves ("omega", fig. 6.13) and over
+        (x_p', Tp) in the irregular sea ("tp", fig. 6.23)."""
+        return {
+            "omega": self._map(
+                self.wave_model("2a"), {"xp": self.xp_grid, "external.omega": self.axes["omega"]}
+            ),
+            "tp": self._map(
+                self.irregular_model("2a"),
+                {"xp": self.xp_grid, "external.spectrum.tp": self.axes["tp"]},
+            ),
+        }
+
     @cached_property
     def calm_counts(self) -> dict:
 
@@ -330,83 +365,95 @@ class WaveStudy:
         s, src = self, self.source
         ax = self.axes
         if cid == "low_frequency_waves_keep_calm_verdict":
-            r = W.low_frequency_waves_keep_calm_verdict(
+            r = thesis_claims.low_frequency_waves_keep_calm_verdict(
                 straight(s.maps_l0_omega["2a"]), s.calm["2a"], ax["omega"], source=src
             )
         elif cid == "moderate_waves_stabilise_2a":
-            r = W.moderate_waves_stabilise_2a(
+            r = thesis_claims.moderate_waves_stabilise_2a(
                 straight(s.maps_l0_omega["2a"]), ax["omega"], source=src
             )
         elif cid == "barge_2b_stays_stable":
-            r = W.barge_2b_stays_stable(straight(s.maps_l0_omega["2b"]), s.calm["2b"], source=src)
+            r = thesis_claims.barge_2b_stays_stable(
+                straight(s.maps_l0_omega["2b"]), s.calm["2b"], source=src
+            )
         elif cid == "small_waves_add_no_equilibria":
-            counts = {}
-            for v, ds in s.equilibria_zeta_omega.items():
-                cnt = valid_count({"valid": ds["valid"].values})
-                zs = s.zeta_grid
-                counts[v] = dict(
-                    calm_count=s.calm_counts[v],
-                    max_count_below_0_8=int(cnt[zs < W.SMALL_ZETA_A].max()),
-                    max_count=int(cnt.max()),
-                )
-            r = W.small_waves_add_no_equilibria(counts, source=src)
+            r = thesis_claims.small_waves_add_no_equilibria(s._equilibrium_counts(), source=src)
         elif cid == "irregular_sea_keeps_2a_stable":
             tp = ax["tp"]
-            r = W.irregular_sea_keeps_2a_stable(
+            r = thesis_claims.irregular_sea_keeps_2a_stable(
                 straight(s.maps_l0_tp["2a"]), s.hs, (tp[0], tp[-1]), source=src
             )
         elif cid == "waves_reduce_path_width":
-            r = W.waves_reduce_path_width(s.widths, source=src)
+            r = thesis_claims.waves_reduce_path_width(s.widths, source=src)
         elif cid == "path_widths_match_thesis":
-            r = W.path_widths_match_thesis(s.widths, source=src)
+            r = thesis_claims.path_widths_match_thesis(s.widths, source=src)
         elif cid == "head_wind_reduces_path_width":
-            r = W.head_wind_reduces_path_width(s.widths, s.wind_tag, s.wind, source=src)
+            r = thesis_claims.head_wind_reduces_path_width(s.widths, s.wind_tag, s.wind, source=src)
         elif cid == "time_domain_agrees_with_linear":
-            r = W.time_domain_agrees_with_linear(s.agreement, source=src)
+            r = thesis_claims.time_domain_agrees_with_linear(s.agreement, source=src)
         elif cid == "stationary_wave_share":
-            sh = s.stationary_shares
-            peak = float(np.max(sh["waves"]))
-            t = THESIS_STATIONARY_WAVE_SHARE
-            r = W.claim(
-                f"Stationary tow, sea state 1: the mean wave drift is at most ~{t:g} % of the "
-                "resistance over the physical Tp range, the wind the majority (fig. 7.2b)",
-                dict(
-                    max_wave_share_percent=peak,
-                    tp_of_max=float(sh["tp"][int(np.argmax(sh["waves"]))]),
-                    min_wind_share_percent=float(np.min(sh["wind"])),
-                    tp_range=[float(sh["tp"][0]), float(sh["tp"][-1])],
-                ),
-                abs(peak - t) <= SHARE_TOLERANCE and float(np.min(sh["wind"])) > 50.0,
-                note="wind from the ILLUSTRATIVE table (the thesis's is unpublished); "
-                f"accepted within {SHARE_TOLERANCE:g} percentage points",
-                source=src,
-            )
+            r = s._stationary_share_claim()
         elif cid == "sailing_wave_share":
-            sh = s.sailing_shares
-            ok = all(
-                abs(sh[u][i] - THESIS_SAILING_SHARES[u][i]) <= SHARE_TOLERANCE
-                for u in sh
-                for i in range(3)
-            )
-            r = W.claim(
-                "Sailing tow, sea state 2, Tp = 7 s: wind/waves/current shares ~75/25/0 % at 0, "
-                "~50/30/20 % at 2 and ~40/20/40 % at 3.5 m/s; the wave share stays 20-30 % "
-                "(fig. 7.4b)",
-                dict(
-                    shares_wind_waves_current_percent={f"{u:g}": list(v) for u, v in sh.items()},
-                    thesis={f"{u:g}": list(v) for u, v in THESIS_SAILING_SHARES.items()},
-                ),
-                ok,
-                note="wind from the ILLUSTRATIVE table (the thesis's is unpublished); "
-                f"each share accepted within {SHARE_TOLERANCE:g} percentage points",
-                source=src,
-            )
+            r = s._sailing_share_claim()
         else:
             raise ValueError(
                 f"parameter 'cid': unknown claim {cid!r}; choose from "
                 f"{CLAIM_IDS + RESISTANCE_CLAIM_IDS}"
             )
         return dict(id=cid, sailing_form=s.form, **r)
+
+    def _equilibrium_counts(self) -> dict:
+        """Per version: the calm count and the most equilibria over the (ζa, ω) map, below
+        `SMALL_ZETA_A` and anywhere."""
+        counts = {}
+        for v, ds in self.equilibria_zeta_omega.items():
+            cnt = valid_count({"valid": ds["valid"].values})
+            counts[v] = dict(
+                calm_count=self.calm_counts[v],
+                max_count_below_0_8=int(cnt[self.zeta_grid < thesis_claims.SMALL_ZETA_A].max()),
+                max_count=int(cnt.max()),
+            )
+        return counts
+
+    def _stationary_share_claim(self) -> dict:
+        sh = self.stationary_shares
+        peak = float(np.max(sh["waves"]))
+        t = THESIS_STATIONARY_WAVE_SHARE
+        return thesis_claims.claim(
+            f"Stationary tow, sea state 1: the mean wave drift is at most ~{t:g} % of the "
+            "resistance over the physical Tp range, the wind the majority (fig. 7.2b)",
+            dict(
+                max_wave_share_percent=peak,
+                tp_of_max=float(sh["tp"][int(np.argmax(sh["waves"]))]),
+                min_wind_share_percent=float(np.min(sh["wind"])),
+                tp_range=[float(sh["tp"][0]), float(sh["tp"][-1])],
+            ),
+            abs(peak - t) <= SHARE_TOLERANCE and float(np.min(sh["wind"])) > 50.0,
+            note="wind from the ILLUSTRATIVE table (the thesis's is unpublished); "
+            f"accepted within {SHARE_TOLERANCE:g} percentage points",
+            source=self.source,
+        )
+
+    def _sailing_share_claim(self) -> dict:
+        sh = self.sailing_shares
+        ok = all(
+            abs(sh[u][i] - THESIS_SAILING_SHARES[u][i]) <= SHARE_TOLERANCE
+            for u in sh
+            for i in range(3)
+        )
+        return thesis_claims.claim(
+            "Sailing tow, sea state 2, Tp = 7 s: wind/waves/current shares ~75/25/0 % at 0, "
+            "~50/30/20 % at 2 and ~40/20/40 % at 3.5 m/s; the wave share stays 20-30 % "
+            "(fig. 7.4b)",
+            dict(
+                shares_wind_waves_current_percent={f"{u:g}": list(v) for u, v in sh.items()},
+                thesis={f"{u:g}": list(v) for u, v in THESIS_SAILING_SHARES.items()},
+            ),
+            ok,
+            note="wind from the ILLUSTRATIVE table (the thesis's is unpublished); "
+            f"each share accepted within {SHARE_TOLERANCE:g} percentage points",
+            source=self.source,
+        )
 
     def claims(self, ids=None) -> list:
         return [self.claim(c) for c in (ids or CLAIM_IDS + RESISTANCE_CLAIM_IDS)]
@@ -454,7 +501,9 @@ class WaveStudy:
                 ("l0", "tp"),
             )
         if cid == "moderate_waves_stabilise_2a":
-            band = (ax["omega"] > W.LOW_OMEGA) & (ax["omega"] <= W.BAND_OMEGA_MAX)
+            band = (ax["omega"] > thesis_claims.LOW_OMEGA) & (
+                ax["omega"] <= thesis_claims.BAND_OMEGA_MAX
+            )
             return pick(
                 self.maps_l0_omega["2a"],
                 lambda mp: (mp >= -STABILITY_TOL) & band[None, :],
@@ -466,7 +515,7 @@ class WaveStudy:
                 ("l0", "omega"),
             )
         if cid == "low_frequency_waves_keep_calm_verdict":
-            low = ax["omega"] < W.LOW_OMEGA
+            low = ax["omega"] < thesis_claims.LOW_OMEGA
             calm = self.calm["2a"][:, None]
 
             def mask(mp):
@@ -521,83 +570,105 @@ def attribute(
         raise ValueError(f"parameter 'estimates': {bad} not in {MODEL_ESTIMATES}")
     n = n or max(study.n // 2, 9)
     base = study.variant(n=n, specialise=False, progress=False)
-    out: dict = dict(id=cid, grid_points_per_axis=n)
     ref = base.claim(cid)
-    out["reproduced_at_attribution_grid"] = ref["reproduced"]
-    est = {}
-    for name in estimates:
-        rng = _range_of(name)
-        est[name] = {}
-        for end in ("low", "high"):
-            if name == "draft":
-                v = base.variant(draft=float(rng[end]))
-                label = f"T = {rng[end]:g} m"
-            else:
-                v = base.variant(factors=((name, float(rng[end])),))
-                label = f"x {rng[end]:g}"
-            r = v.claim(cid)
-            est[name][end] = dict(value=label, reproduced=r["reproduced"], measured=r["measured"])
-    out["estimates"] = est
+    est = {name: _estimate_ends(base, cid, name) for name in estimates}
+    pan = _panel_estimates(base, cid, panel_variants)
+    return dict(
+        id=cid,
+        grid_points_per_axis=n,
+        reproduced_at_attribution_grid=ref["reproduced"],
+        estimates=est,
+        panel_estimates=pan,
+        gradient=_gradient(study, cid),
+        flipped_by=_flips(est, pan, ref["reproduced"]),
+    )
+
+
+def _estimate_ends(base: WaveStudy, cid: str, name: str) -> dict:
+    """Claim ``cid`` re-run with estimate ``name`` at each end of its plausible range."""
+    rng = _range_of(name)
+    out = {}
+    for end in ("low", "high"):
+        if name == "draft":
+            v = base.variant(draft=float(rng[end]))
+            label = f"T = {rng[end]:g} m"
+        else:
+            v = base.variant(factors=((name, float(rng[end])),))
+            label = f"x {rng[end]:g}"
+        r = v.claim(cid)
+        out[end] = dict(value=label, reproduced=r["reproduced"], measured=r["measured"])
+    return out
+
+
+def _panel_estimates(base: WaveStudy, cid: str, panel_variants: dict | None) -> dict:
+    """Claim ``cid`` with each panel-solve estimate's variant database, against the base
+    database solved at the same mesh."""
+    if not panel_variants:
+        return {k: "not run: needs estimate-variant panel databases" for k in PANEL_ESTIMATES}
     pan: dict = {}
-    if panel_variants:
-        b0 = base.variant(qtf=panel_variants[("base",)])
-        r0 = b0.claim(cid)["reproduced"]
-        pan["base_at_variant_mesh"] = r0
-        for name in PANEL_ESTIMATES:
-            pan[name] = {}
-            for end in ("low", "high"):
-                q = panel_variants.get((name, end))
-                if q is None:
-                    pan[name][end] = "not run"
-                    continue
-                r = base.variant(qtf=q).claim(cid)
-                pan[name][end] = dict(
-                    value=_range_of(name)[end], reproduced=r["reproduced"], measured=r["measured"]
-                )
-    else:
-        pan = {k: "not run: needs estimate-variant panel databases" for k in PANEL_ESTIMATES}
-    out["panel_estimates"] = pan
+    pan["base_at_variant_mesh"] = base.variant(qtf=panel_variants[("base",)]).claim(cid)[
+        "reproduced"
+    ]
+    for name in PANEL_ESTIMATES:
+        pan[name] = {}
+        for end in ("low", "high"):
+            q = panel_variants.get((name, end))
+            if q is None:
+                pan[name][end] = "not run"
+                continue
+            r = base.variant(qtf=q).claim(cid)
+            pan[name][end] = dict(
+                value=_range_of(name)[end], reproduced=r["reproduced"], measured=r["measured"]
+            )
+    return pan
+
+
+def _gradient(study: WaveStudy, cid: str):
+    """∂(max Re λ)/∂p at the claim's critical point and the change of each p that would
+    flip it there (a linear estimate), or why there is none."""
     crit = study.critical_point(cid)
     if crit is None:
-        out["gradient"] = (
+        return (
             "no map point decides the claim against it: no gradient"
             if cid in MARGIN_CLAIM_IDS
             else "not a stability margin (counts, path widths or shares): no gradient"
         )
-    else:
-        model, want, where = crit
-        names = ("a11", "a22", "a66", "EA")
-        _, x, g, a, _ = sensitivity_arrays(model, names)
-        target = want * 1.5 * STABILITY_TOL
-        rows = {}
-        for k, nm in enumerate(names):
-            gk = float(g[0, k])
-            dp = (target - float(a[0])) / gk if gk != 0 else math.inf
-            rows[nm] = dict(
-                value=float(x[0, k]),
-                gradient=gk,
-                change_to_flip=dp,
-                relative_change_to_flip=dp / float(x[0, k]) if float(x[0, k]) else math.inf,
-            )
-        out["gradient"] = dict(
-            point=where,
-            max_real=float(a[0]),
-            wanted="stable" if want < 0 else "unstable",
-            parameters=rows,
+    model, want, where = crit
+    names = ("a11", "a22", "a66", "EA")
+    _, x, g, a, _ = sensitivity_arrays(model, names)
+    target = want * 1.5 * STABILITY_TOL
+    rows = {}
+    for k, nm in enumerate(names):
+        gk = float(g[0, k])
+        dp = (target - float(a[0])) / gk if gk != 0 else math.inf
+        rows[nm] = dict(
+            value=float(x[0, k]),
+            gradient=gk,
+            change_to_flip=dp,
+            relative_change_to_flip=dp / float(x[0, k]) if float(x[0, k]) else math.inf,
         )
+    return dict(
+        point=where,
+        max_real=float(a[0]),
+        wanted="stable" if want < 0 else "unstable",
+        parameters=rows,
+    )
+
+
+def _flips(est: dict, pan: dict, reproduced) -> list:
+    """The estimate ends (and panel variants) under which the claim's verdict changes."""
     flips = [
         f"{name} {end}"
         for name, e in est.items()
         for end, r in e.items()
-        if r["reproduced"] != ref["reproduced"]
+        if r["reproduced"] != reproduced
     ]
     for name, e in pan.items():
         if isinstance(e, dict):
             for end, r in e.items():
                 if isinstance(r, dict) and r["reproduced"] != pan.get("base_at_variant_mesh"):
                     flips.append(f"{name} {end} (panel variant)")
-    out["flipped_by"] = flips
-    return out
+    return flips
 
 
 # ---------------------------------------------------------------------- slowly varying drift

@@ -1,5 +1,5 @@
 """The tow file's schema: every section and key with its type, units, rule and default, the
-errors that name the key and its line, and a small TOML writer for the resolved file.
+errors that name the key and its line, and the writer of the resolved file (tomli-w).
 
 The schema is data (`SCHEMA`): the reader, the template and the documentation
 (docs/towfile.md) all follow it, so a key is declared in one place.
@@ -12,6 +12,8 @@ import re
 import warnings
 from dataclasses import dataclass, field
 from typing import NoReturn
+
+import tomli_w
 
 __all__ = ["TowFileError", "TowFileWarning", "Key", "SCHEMA", "ARRAYS", "locate", "to_toml"]
 
@@ -337,39 +339,36 @@ def locate(text: str, path: tuple) -> int | None:
     return section_line
 
 
-def _toml_value(v) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        return repr(v)
-    if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+def _plain(v):
+    """``v`` without None values (TOML has no null), tuples as lists."""
     if isinstance(v, dict):
-        return "{" + ", ".join(f"{k} = {_toml_value(x)}" for k, x in v.items()) + "}"
-    raise TypeError(f"no TOML form for {v!r}")
+        return {k: _plain(x) for k, x in v.items() if x is not None}
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    return v
 
 
 def to_toml(data: dict, comments: dict | None = None) -> str:
-    """TOML text of a resolved tow file (sections of scalars, lists and inline tables; arrays
-    of tables), with ``comments[(section, key)]`` after the values."""
+    """TOML text of a resolved tow file (written by tomli-w), with ``comments[(section,
+    key)]`` (or ``comments[(section, index, key)]`` in an array of tables) after the values."""
     comments = comments or {}
     out = []
-    for section, body in data.items():
-        tables = body if isinstance(body, list) else [body]
-        for i, table in enumerate(tables):
-            out.append(f"[[{section}]]" if isinstance(body, list) else f"[{section}]")
-            for k, v in table.items():
-                if v is None:
-                    continue
-                line = f"{k} = {_toml_value(v)}"
-                note = comments.get((section, i, k)) or comments.get((section, k))
-                out.append(f"{line:<40} # {note}" if note else line)
-            out.append("")
-    return "\n".join(out)
+    section, index, counts = None, None, {}
+    for line in tomli_w.dumps(_plain(data)).splitlines():
+        h = _HEADER.match(line)
+        if h:
+            section = h.group(2)
+            if h.group(1) == "[[":
+                counts[section] = index = counts.get(section, -1) + 1
+            else:
+                index = None
+        k = None if h else _KEYLINE.match(line)
+        if k and section is not None:
+            note = comments.get((section, index, k.group(1))) or comments.get((section, k.group(1)))
+            if note:
+                line = f"{line:<40} # {note}"
+        out.append(line)
+    return "\n".join(out) + "\n"
 
 
 @dataclass

@@ -230,7 +230,7 @@ def load(spec) -> Tow:
     warning), a tow-file path, or an already parsed dict."""
 
     if isinstance(spec, dict):
-        return _build(spec, "", "<dict>")
+        return _resolve(spec, "", "<dict>")
     spec = str(spec)
     name, msg = canonical_name(spec)
     if msg:
@@ -252,7 +252,7 @@ def loads(text: str, source: str = "<string>", base=None) -> Tow:
     except tomllib.TOMLDecodeError as e:
         m = _line_of(str(e))
         raise TowFileError(f"not valid TOML: {e}", source=source, line=m) from None
-    return _build(data, text, source, base)
+    return _resolve(data, text, source, base)
 
 
 def _line_of(message: str):
@@ -282,365 +282,45 @@ def _check_section(p: Problems, name: str, table, index=None) -> dict:
     return out
 
 
-def _build(data: dict, text: str, source: str, base=None) -> Tow:
-
+def _resolve(data: dict, text: str, source: str, base=None) -> Tow:
+    """Check a parsed tow file and resolve it, one section at a time (each function below
+    fills the section's defaults in place, so that ``resolved`` is the file as it was used)."""
     p = Problems(text, source)
-    for k in data:
-        if k not in SCHEMA:
-            p.error((k,), f"unknown section [{k}] (sections: {', '.join(SCHEMA)})")
-    for k in REQUIRED:
-        if k not in data:
-            p.error((k,), f"missing section [{k}]")
-    if "sea_state" in data and not isinstance(data["sea_state"], list):
-        p.error(("sea_state",), "write sea states as [[sea_state]] (an array of tables)")
+    _check_sections(p, data)
     sec = {k: _check_section(p, k, data.get(k, {})) for k in SCHEMA if k not in ARRAYS}
     seas_raw = [
         _check_section(p, "sea_state", s, i) for i, s in enumerate(data.get("sea_state", []))
     ]
     assumed: list = []
-
-    # ---------------------------------------------------------------- tow
     if "name" not in sec["tow"]:
         p.error(("tow", "name"), "missing key: every tow needs a name")
-    speed = sec["tow"]["speed"]
-
-    # ---------------------------------------------------------------- vessel
     v = sec["vessel"]
-    vessel = None
-    if "preset" in v:
-        if v["preset"] not in presets.VESSELS:
-            p.error(
-                ("vessel", "preset"),
-                f"unknown preset {v['preset']!r}; built-in vessels: {', '.join(presets.VESSELS)}",
-            )
-        if "derivatives" in v:
-            p.error(("vessel", "derivatives"), "give either preset or derivatives, not both")
-        for k, val in (("length", presets.BARGE2_LENGTH), ("breadth", presets.BARGE2_BREADTH)):
-            if k in v and v[k] != val:
-                p.error(
-                    ("vessel", k), f"the preset's {k} is {val} m; for another hull give derivatives"
-                )
-        v.setdefault("length", presets.BARGE2_LENGTH)
-        v.setdefault("breadth", presets.BARGE2_BREADTH)
-        if "draft" not in v:
-            v["draft"] = float(presets.ASSUMPTIONS["draft"]["value"])
-        vessel = presets.VESSELS[v["preset"]](v["draft"])
-        assumed += list(vessel.assumed)
-    else:
-        for k in ("length", "breadth", "draft"):
-            if k not in v:
-                p.error(
-                    ("vessel", k),
-                    "missing key: a vessel without a preset needs length, breadth and draft",
-                )
-        regression = v.get("regression")
-        if regression is not None and regression not in presets.REGRESSIONS:
-            p.error(
-                ("vessel", "regression"),
-                f"unknown regression {regression!r}; known: {', '.join(presets.REGRESSIONS)}",
-            )
-        if regression is not None and "block_coefficient" not in v:
-            p.error(("vessel", "block_coefficient"), "missing key: a regression needs C_B")
-        if regression is not None and "derivatives" not in v:
-            v["derivatives"] = {}
-        if "derivatives" in v:
-            d = v["derivatives"]
-            if not isinstance(d, dict):
-                p.error(("vessel", "derivatives"), "expected a table of derivatives")
-            for k, val in d.items():
-                if k not in _DERIVATIVES + _ADDED:
-                    p.error(
-                        ("vessel", "derivatives", k),
-                        f"unknown derivative (known: {', '.join(_DERIVATIVES + _ADDED)})",
-                    )
-                if (
-                    isinstance(val, bool)
-                    or not isinstance(val, (int, float))
-                    or not math.isfinite(val)
-                ):
-                    p.error(("vessel", "derivatives", k), f"expected a finite number, got {val!r}")
-            extra_notes = []
-            if "block_coefficient" in v:
-                # every parameter is estimable; with no regression named only the linear
-                # ones are filled (Clarke), the rest must be given
-                est, est_notes = presets.particulars_derivatives(
-                    v["length"],
-                    v["breadth"],
-                    v["draft"],
-                    v["block_coefficient"],
-                    regression or "clarke",
-                )
-                fill = [k for k in _DERIVATIVES + _ADDED if k not in d]
-                if regression is None:
-                    fill = [k for k in fill if k in ("Yv", "Yr", "Nv", "Nr")]
-                elif "a11" in d and "Yr" in fill and regression == "kijima":
-                    est["Yr"] += float(d["a11"]) - est["a11"]  # Y_r' − m_x' = πk/4
-                d = {**d, **{k: est[k] for k in fill}}
-                extra_notes = [(k, est_notes[k]) for k in fill]
-            missing = [k for k in _DERIVATIVES if k not in d]
-            if missing:
-                p.error(("vessel", "derivatives"), f"missing derivative(s) {', '.join(missing)}")
-            vals = {k: float(d[k]) for k in d}
-            notes = list(extra_notes)
-            if not all(k in vals for k in _ADDED):  # a full table without added masses
-                added = presets.clarke_added_mass(vals["m"], v["length"], v["breadth"], v["draft"])
-                for k in _ADDED:
-                    if k not in vals:
-                        vals[k] = added[k]
-                        note = (
-                            presets.ASSUMPTIONS["a11_over_m"]["note"]
-                            if k == "a11"
-                            else presets.ASSUMPTIONS["a22,a66"]["note"].replace(
-                                "C_B from m' and T = 5.0 m", f"C_B from m' and T = {v['draft']} m"
-                            )
-                        )
-                        notes.append((k, note))
-            try:
-                vessel = Vessel(**vals, name=sec["tow"]["name"], assumed=tuple(notes))
-            except ValueError as e:
-                p.error(("vessel", "derivatives"), str(e))
-            assumed += notes
+    vessel = _vessel(p, v, sec["tow"]["name"], assumed)
     L, B, T = float(v["length"]), float(v["breadth"]), float(v["draft"])
-    scales = Scales(length=L, draft=T, u_tug=speed)
-
-    # ---------------------------------------------------------------- hull
+    scales = Scales(length=L, draft=T, u_tug=sec["tow"]["speed"])
     h = sec["hull"]
-
-    wl_spec = h.get("waterline", "barge2" if "preset" in v else "box")
-    h["waterline"] = wl_spec
-
-    if wl_spec == "box":
-        waterline = box_waterline(L, B, T)
-    elif wl_spec == "barge2":
-        waterline = barge2_waterline(T)
-    else:
-        path = _path(wl_spec, base)
-        if not path.is_file():
-            p.error(
-                ("hull", "waterline"), f"box, barge2 or a waterline file; no file {str(path)!r}"
-            )
-        try:
-            waterline = read_waterline(path, draft=T)
-        except (ValueError, OSError) as e:
-            p.error(("hull", "waterline"), str(e))
-    drift = h.get("drift")
-    if "mesh" in h:
-        if drift is not None:
-            p.error(("hull", "mesh"), "give either drift or mesh, not both")
-        drift = _mesh_spec(p, h["mesh"], base, T)
-    if drift is None:
-        drift = "barge2:near_field" if "preset" in v else "kashiwagi"
-        h["drift"] = drift
-        if "preset" not in v:
-            assumed.append(
-                (
-                    "wave_drift",
-                    f"no drift source given: the Kashiwagi waterline method on the {wl_spec} waterline (estimate)",
-                )
-            )
-    if isinstance(drift, dict) and "mesh" in drift:
-        pass
-    elif isinstance(drift, dict):
-        if "file" not in drift:
-            p.error(("hull", "drift"), "a drift-file table needs file = PATH")
-        drift = dict(drift, file=str(_path(drift["file"], base)))
-    elif isinstance(drift, str) and drift not in METHODS:
-        hull_name, _, method = drift.rpartition(":")
-        known = drift == STANDIN or (hull_name in DATABASES and method in DATABASE_METHODS)
-        if not known:
-            if drift in DATABASE_METHODS:
-                p.error(
-                    ("hull", "drift"),
-                    f"name the hull too, e.g. 'barge2:{drift}' (hulls: {', '.join(DATABASES)})",
-                )
-            path = _path(drift, base)
-            if not path.is_file():
-                p.error(
-                    ("hull", "drift"),
-                    f"{drift!r} is not a shipped database (hull:method with hull in "
-                    f"{', '.join(DATABASES)}), {STANDIN!r}, a waterline method "
-                    f"({', '.join(METHODS)}) or a file",
-                )
-            drift = str(path)
+    waterline = _waterline(p, h, "preset" in v, base, L, B, T)
+    drift = _drift(p, h, "preset" in v, base, T, assumed)
     form = h["sailing_form"]
     if form not in ("aranha", "linear", "thesis"):
         p.error(("hull", "sailing_form"), f"aranha, linear or thesis, got {form!r}")
-    if h["wind_table"] == "illustrative":
-        wind_table = presets.barge2_wind_table()
-        assumed.append(("wind_table", presets.ASSUMPTIONS["wind_table"]["note"]))
-    else:
-        try:
-            wind_table = read_coefficient_table(_path(h["wind_table"], base))
-        except ValueError as e:
-            p.error(("hull", "wind_table"), str(e))
-    if "wind_height" not in h:
-        h["wind_height"] = float(presets.ASSUMPTIONS["wind_height"]["value"])
-        assumed.append(("wind_height", presets.ASSUMPTIONS["wind_height"]["note"]))
+    wind_table = _wind(p, h, base, assumed)
     assumed.append(("wave_drift", _describe_drift(drift, form)))
-
-    # ---------------------------------------------------------------- towline
-    t = sec["towline"]
-    towline = None
-    line_info = None
+    towline, line_info = None, None
     if "towline" in data:
-        catalogue = _catalogue_line(p, t)
-        if "segments" in t:
-            for k in ("l0", "length", "EA", "EA_nd", "weight", "line", "diameter_mm", "grade"):
-                if k in t:
-                    p.error(("towline", k), "a composite line's segments set it: drop the key")
-        for name, pair in _PAIRS.items():
-            given = [k for k in pair if k in t]
-            optional = (
-                (name == "attachment" and "bridle" in t)
-                or (name == "stiffness" and (catalogue is not None or "segments" in t))
-                or (name == "length" and "segments" in t)
-            )
-            if len(given) > 1 or (not given and not optional):
-                what = "one of " + " or ".join(pair)
-                p.error(
-                    ("towline", pair[0]),
-                    f"give exactly {what}" + (" (got both)" if len(given) == 2 else ""),
-                )
-        l0 = t["l0"] if "l0" in t else t.get("length", 0.0) / L
-        if "EA_nd" in t:
-            EA_nd = t["EA_nd"]
-        elif "EA" in t:
-            EA_nd = float(t["EA"] / scales.force)
-        else:
-            EA_nd = float(catalogue.EA / scales.force) if catalogue is not None else 0.0
-        if "bridle" in t:
-            b = t["bridle"]
-            if not isinstance(b, dict) or set(b) != set(_BRIDLE):
-                p.error(
-                    ("towline", "bridle"),
-                    f"expected {{{', '.join(k + ' = ...' for k in _BRIDLE)}}}",
-                )
-            if "xp" in t or "xp_m" in t:
-                p.error(("towline", "bridle"), "a bridle sets the attachment point: drop xp")
-            try:
-                apex = Bridle.symmetric(*(float(b[k]) for k in _BRIDLE)).apex
-            except ValueError as e:
-                p.error(("towline", "bridle"), str(e))
-            xp, yp = float(apex[0]), float(apex[1])
-        else:
-            xp, yp = (t["xp"] if "xp" in t else t["xp_m"] / L), t["yp"]
-        segs = _segments(p, t["segments"]) if "segments" in t else None
-        try:
-            if segs is not None:
-                towline = lines.composite(segs, scales=scales, xp=xp, yp=yp)
-                line_info = [_line_record(lt, length) for lt, length in segs]
-                assumed.append(("towline", "; ".join(f"{lt.name}: {lt.source}" for lt, _ in segs)))
-            elif "weight" in t or catalogue is not None:
-                weight = t["weight"] if "weight" in t or catalogue is None else catalogue.weight
-                towline = CatenaryTowline(
-                    l0=l0, xp=xp, EA=EA_nd, w=float(weight * L / scales.force), yp=yp
-                )
-            else:
-                towline = Towline(l0=l0, xp=xp, EA=EA_nd, yp=yp)
-        except ValueError as e:
-            p.error(("towline", _field_key(str(e), t)), str(e))
-        if catalogue is not None:
-            if "EA" in t or "EA_nd" in t:
-                catalogue = catalogue.with_values(EA=float(EA_nd * scales.force))
-            line_info = [_line_record(catalogue, l0 * L)]
-            assumed.append(("towline", f"{catalogue.name}: {catalogue.source}"))
-        if "EA" in t and "preset" in v and t["EA"] == presets.ASSUMPTIONS["EA"]["value"]:
-            assumed.append(("EA", presets.ASSUMPTIONS["EA"]["note"]))
+        towline, line_info = _towline(p, sec["towline"], "preset" in v, scales, assumed)
     elif vessel is not None:
         p.error(
             ("towline",),
             "missing section [towline]: a tow with a manoeuvring model needs its towline",
         )
-
-    # ---------------------------------------------------------------- tug and route
-    tug = None
-    g = sec["tug"]
-    if any(k in g for k in ("bollard_pull_t", "free_speed", "speeds", "pulls_t")):
-        tonne = 9.80665e3
-        eff = dict(efficiency=g["efficiency"], resistance_coefficient=g["resistance_coefficient"])
-        try:
-            if "speeds" in g or "pulls_t" in g:
-                for k in ("speeds", "pulls_t"):
-                    if k not in g:
-                        p.error(("tug", k), "a pull table needs both speeds and pulls_t")
-                if len(g["speeds"]) != len(g["pulls_t"]):
-                    p.error(("tug", "pulls_t"), "needs as many values as speeds")
-
-                tug = Tug.from_table(g["speeds"], np.asarray(g["pulls_t"]) * tonne, **eff)
-            else:
-                for k in ("bollard_pull_t", "free_speed"):
-                    if k not in g:
-                        p.error(
-                            ("tug", k),
-                            "missing key: give bollard_pull_t and free_speed, or speeds and pulls_t",
-                        )
-                tug = Tug(
-                    bollard_pull=g["bollard_pull_t"] * tonne, free_speed=g["free_speed"], **eff
-                )
-        except ValueError as e:
-            p.error(("tug",), str(e))
-    r = sec["route"]
-    if "length_nm" in r and "length_m" in r:
-        p.error(("route", "length_m"), "give length_nm or length_m, not both")
-    route = r["length_nm"] * 1852.0 if "length_nm" in r else r.get("length_m")
-    water_depth = r.get("water_depth")
-
-    # ---------------------------------------------------------------- sea states
-
-    seas = []
-    for i, s in enumerate(seas_raw):
-        if "builtin" in s:
-            if s["builtin"] not in presets.SEA_STATES:
-                p.error(
-                    ("sea_state", i, "builtin"),
-                    f"unknown sea state {s['builtin']!r}; built-in: {', '.join(presets.SEA_STATES)}",
-                )
-            base_s = presets.SEA_STATES[s["builtin"]]
-            for k, val in base_s.items():
-                if k not in data["sea_state"][i]:
-                    s[k] = float(val)
-            s.setdefault("name", s["builtin"])
-        for k in ("hs", "tp"):
-            if k not in s:
-                p.error(
-                    ("sea_state", i, k),
-                    "missing key: every sea state needs hs and tp (or a builtin)",
-                )
-        s.setdefault("name", f"sea state {i + 1}")
-        if s["hs"] > 0:
-            lo, hi = (float(x) for x in physical_tp_range(s["hs"]))
-            if not lo <= s["tp"] <= hi:
-                p.warn(
-                    ("sea_state", i, "tp"),
-                    f"Tp = {s['tp']:g} s is outside the physical range {lo:.2f}-{hi:.2f} s for "
-                    f"Hs = {s['hs']:g} m (thesis eq. 3.5): such a sea is steeper or flatter than "
-                    "wind seas are",
-                )
-        kw = {k: s[k] for k in ("hs", "tp", "gamma", "wind_speed", "current_speed")}
-        for k in ("wave_angle", "wind_angle", "current_angle"):
-            kw[k] = math.radians(s[f"{k}_deg"])
-        try:
-            seas.append(SeaState(**kw, name=s["name"]))
-        except ValueError as e:
-            p.error(("sea_state", i), str(e))
-    names = [s.name for s in seas]
-    if len(set(names)) != len(names):
-        i = next(i for i, n in enumerate(names) if names.index(n) != i)
-        p.error(("sea_state", i, "name"), f"sea-state names must differ; {names[i]!r} is repeated")
-
-    resolved = {k: val for k, val in sec.items() if k in data or k in REQUIRED}
-    resolved["vessel"] = {
-        k: v[k]
-        for k in ("preset", "length", "breadth", "draft", "block_coefficient", "derivatives")
-        if k in v
-    }
-    if seas_raw:
-        resolved["sea_state"] = seas_raw
-    resolved["study"] = sec["study"]
+    tug = _tug(p, sec["tug"])
+    route, water_depth = _route(p, sec["route"])
+    seas = _sea_states(p, seas_raw, data.get("sea_state", []))
     return Tow(
         name=sec["tow"]["name"],
         source=source,
-        resolved=resolved,
+        resolved=_resolved(data, sec, v, seas_raw),
         scales=scales,
         vessel=vessel,
         towline=towline,
@@ -658,6 +338,387 @@ def _build(data: dict, text: str, source: str, base=None) -> Tow:
         warnings=tuple(p.warnings),
         line_info=line_info,
     )
+
+
+def _check_sections(p: Problems, data: dict) -> None:
+    for k in data:
+        if k not in SCHEMA:
+            p.error((k,), f"unknown section [{k}] (sections: {', '.join(SCHEMA)})")
+    for k in REQUIRED:
+        if k not in data:
+            p.error((k,), f"missing section [{k}]")
+    if "sea_state" in data and not isinstance(data["sea_state"], list):
+        p.error(("sea_state",), "write sea states as [[sea_state]] (an array of tables)")
+
+
+def _resolved(data: dict, sec: dict, v: dict, seas_raw: list) -> dict:
+    """The file as used: the sections it has (and the required ones), defaults filled in."""
+    resolved = {k: val for k, val in sec.items() if k in data or k in REQUIRED}
+    resolved["vessel"] = dict(v)
+    if seas_raw:
+        resolved["sea_state"] = seas_raw
+    resolved["study"] = sec["study"]
+    return resolved
+
+
+# ---------------------------------------------------------------------- [vessel]
+
+
+def _vessel(p: Problems, v: dict, name: str, assumed: list) -> Vessel | None:
+    """The [vessel] section: a built-in vessel, or one from derivatives and particulars (None:
+    a hull without a manoeuvring model, for its drift and resistance only)."""
+    if "preset" in v:
+        return _preset_vessel(p, v, assumed)
+    for k in ("length", "breadth", "draft"):
+        if k not in v:
+            p.error(
+                ("vessel", k),
+                "missing key: a vessel without a preset needs length, breadth and draft",
+            )
+    regression = v.get("regression")
+    if regression is not None and regression not in presets.REGRESSIONS:
+        p.error(
+            ("vessel", "regression"),
+            f"unknown regression {regression!r}; known: {', '.join(presets.REGRESSIONS)}",
+        )
+    if regression is not None and "block_coefficient" not in v:
+        p.error(("vessel", "block_coefficient"), "missing key: a regression needs C_B")
+    d = v.get("derivatives", {} if regression is not None else None)
+    if d is None:
+        return None
+    _check_derivatives(p, d)
+    notes: list = []
+    if "block_coefficient" in v:
+        d, notes = _fill_from_particulars(v, d, regression)
+    missing = [k for k in _DERIVATIVES if k not in d]
+    if missing:
+        p.error(("vessel", "derivatives"), f"missing derivative(s) {', '.join(missing)}")
+    vals = {k: float(d[k]) for k in d}
+    notes += _fill_added_masses(vals, v)
+    try:
+        vessel = Vessel(**vals, name=name, assumed=tuple(notes))
+    except ValueError as e:
+        p.error(("vessel", "derivatives"), str(e))
+    assumed += notes
+    return vessel
+
+
+def _preset_vessel(p: Problems, v: dict, assumed: list) -> Vessel:
+    if v["preset"] not in presets.VESSELS:
+        p.error(
+            ("vessel", "preset"),
+            f"unknown preset {v['preset']!r}; built-in vessels: {', '.join(presets.VESSELS)}",
+        )
+    if "derivatives" in v:
+        p.error(("vessel", "derivatives"), "give either preset or derivatives, not both")
+    for k, val in (("length", presets.BARGE2_LENGTH), ("breadth", presets.BARGE2_BREADTH)):
+        if k in v and v[k] != val:
+            p.error(
+                ("vessel", k), f"the preset's {k} is {val} m; for another hull give derivatives"
+            )
+    v.setdefault("length", presets.BARGE2_LENGTH)
+    v.setdefault("breadth", presets.BARGE2_BREADTH)
+    if "draft" not in v:
+        v["draft"] = float(presets.ASSUMPTIONS["draft"]["value"])
+    vessel = presets.VESSELS[v["preset"]](v["draft"])
+    assumed += list(vessel.assumed)
+    return vessel
+
+
+def _check_derivatives(p: Problems, d) -> None:
+    if not isinstance(d, dict):
+        p.error(("vessel", "derivatives"), "expected a table of derivatives")
+    for k, val in d.items():
+        if k not in _DERIVATIVES + _ADDED:
+            p.error(
+                ("vessel", "derivatives", k),
+                f"unknown derivative (known: {', '.join(_DERIVATIVES + _ADDED)})",
+            )
+        if isinstance(val, bool) or not isinstance(val, (int, float)) or not math.isfinite(val):
+            p.error(("vessel", "derivatives", k), f"expected a finite number, got {val!r}")
+
+
+def _fill_from_particulars(v: dict, d: dict, regression) -> tuple[dict, list]:
+    """The derivatives not given, estimated from the particulars: every one with a
+    regression named; with none named only the linear ones (Clarke), the rest must be given."""
+    est, est_notes = presets.particulars_derivatives(
+        v["length"], v["breadth"], v["draft"], v["block_coefficient"], regression or "clarke"
+    )
+    fill = [k for k in _DERIVATIVES + _ADDED if k not in d]
+    if regression is None:
+        fill = [k for k in fill if k in ("Yv", "Yr", "Nv", "Nr")]
+    elif "a11" in d and "Yr" in fill and regression == "kijima":
+        est["Yr"] += float(d["a11"]) - est["a11"]  # Y_r' − m_x' = πk/4
+    return {**d, **{k: est[k] for k in fill}}, [(k, est_notes[k]) for k in fill]
+
+
+def _fill_added_masses(vals: dict, v: dict) -> list:
+    """Added masses a full table of derivatives leaves out, from the Clarke regressions."""
+    if all(k in vals for k in _ADDED):
+        return []
+    added = presets.clarke_added_mass(vals["m"], v["length"], v["breadth"], v["draft"])
+    notes = []
+    for k in _ADDED:
+        if k not in vals:
+            vals[k] = added[k]
+            note = (
+                presets.ASSUMPTIONS["a11_over_m"]["note"]
+                if k == "a11"
+                else presets.ASSUMPTIONS["a22,a66"]["note"].replace(
+                    "C_B from m' and T = 5.0 m", f"C_B from m' and T = {v['draft']} m"
+                )
+            )
+            notes.append((k, note))
+    return notes
+
+
+# ---------------------------------------------------------------------- [hull]
+
+
+def _waterline(p: Problems, h: dict, preset: bool, base, L: float, B: float, T: float):
+    wl_spec = h.get("waterline", "barge2" if preset else "box")
+    h["waterline"] = wl_spec
+    if wl_spec == "box":
+        return box_waterline(L, B, T)
+    if wl_spec == "barge2":
+        return barge2_waterline(T)
+    path = _path(wl_spec, base)
+    if not path.is_file():
+        p.error(("hull", "waterline"), f"box, barge2 or a waterline file; no file {str(path)!r}")
+    try:
+        return read_waterline(path, draft=T)
+    except (ValueError, OSError) as e:
+        p.error(("hull", "waterline"), str(e))
+
+
+def _drift(p: Problems, h: dict, preset: bool, base, T: float, assumed: list):
+    """The drift source of [hull]: a mesh to solve, a drift-file table, a shipped database,
+    the stand-in, a waterline method or a file (checked here, read when used)."""
+    drift = h.get("drift")
+    if "mesh" in h:
+        if drift is not None:
+            p.error(("hull", "mesh"), "give either drift or mesh, not both")
+        drift = _mesh_spec(p, h["mesh"], base, T)
+    if drift is None:
+        drift = "barge2:near_field" if preset else "kashiwagi"
+        h["drift"] = drift
+        if not preset:
+            assumed.append(
+                (
+                    "wave_drift",
+                    f"no drift source given: the Kashiwagi waterline method on the {h['waterline']} waterline (estimate)",
+                )
+            )
+    if isinstance(drift, dict) and "mesh" in drift:
+        return drift
+    if isinstance(drift, dict):
+        if "file" not in drift:
+            p.error(("hull", "drift"), "a drift-file table needs file = PATH")
+        return dict(drift, file=str(_path(drift["file"], base)))
+    if isinstance(drift, str) and drift not in METHODS:
+        return _named_drift(p, drift, base)
+    return drift
+
+
+def _named_drift(p: Problems, drift: str, base) -> str:
+    hull_name, _, method = drift.rpartition(":")
+    if drift == STANDIN or (hull_name in DATABASES and method in DATABASE_METHODS):
+        return drift
+    if drift in DATABASE_METHODS:
+        p.error(
+            ("hull", "drift"),
+            f"name the hull too, e.g. 'barge2:{drift}' (hulls: {', '.join(DATABASES)})",
+        )
+    path = _path(drift, base)
+    if not path.is_file():
+        p.error(
+            ("hull", "drift"),
+            f"{drift!r} is not a shipped database (hull:method with hull in "
+            f"{', '.join(DATABASES)}), {STANDIN!r}, a waterline method "
+            f"({', '.join(METHODS)}) or a file",
+        )
+    return str(path)
+
+
+def _wind(p: Problems, h: dict, base, assumed: list):
+    """The wind table and windage height of [hull]."""
+    if h["wind_table"] == "illustrative":
+        wind_table = presets.barge2_wind_table()
+        assumed.append(("wind_table", presets.ASSUMPTIONS["wind_table"]["note"]))
+    else:
+        try:
+            wind_table = read_coefficient_table(_path(h["wind_table"], base))
+        except ValueError as e:
+            p.error(("hull", "wind_table"), str(e))
+    if "wind_height" not in h:
+        h["wind_height"] = float(presets.ASSUMPTIONS["wind_height"]["value"])
+        assumed.append(("wind_height", presets.ASSUMPTIONS["wind_height"]["note"]))
+    return wind_table
+
+
+# ---------------------------------------------------------------------- [towline]
+
+
+def _towline(p: Problems, t: dict, preset: bool, scales: Scales, assumed: list):
+    """(the towline, the catalogue lines it is made of or None) of [towline]."""
+    L = scales.length
+    catalogue = _catalogue_line(p, t)
+    _check_towline_keys(p, t, catalogue)
+    l0 = t["l0"] if "l0" in t else t.get("length", 0.0) / L
+    if "EA_nd" in t:
+        EA_nd = t["EA_nd"]
+    elif "EA" in t:
+        EA_nd = float(t["EA"] / scales.force)
+    else:
+        EA_nd = float(catalogue.EA / scales.force) if catalogue is not None else 0.0
+    xp, yp = _attachment(p, t, L)
+    segs = _segments(p, t["segments"]) if "segments" in t else None
+    line_info = None
+    try:
+        if segs is not None:
+            towline = lines.composite(segs, scales=scales, xp=xp, yp=yp)
+            line_info = [_line_record(lt, length) for lt, length in segs]
+            assumed.append(("towline", "; ".join(f"{lt.name}: {lt.source}" for lt, _ in segs)))
+        elif "weight" in t or catalogue is not None:
+            weight = t["weight"] if "weight" in t or catalogue is None else catalogue.weight
+            towline = CatenaryTowline(
+                l0=l0, xp=xp, EA=EA_nd, w=float(weight * L / scales.force), yp=yp
+            )
+        else:
+            towline = Towline(l0=l0, xp=xp, EA=EA_nd, yp=yp)
+    except ValueError as e:
+        p.error(("towline", _field_key(str(e), t)), str(e))
+    if catalogue is not None:
+        if "EA" in t or "EA_nd" in t:
+            catalogue = catalogue.with_values(EA=float(EA_nd * scales.force))
+        line_info = [_line_record(catalogue, l0 * L)]
+        assumed.append(("towline", f"{catalogue.name}: {catalogue.source}"))
+    if "EA" in t and preset and t["EA"] == presets.ASSUMPTIONS["EA"]["value"]:
+        assumed.append(("EA", presets.ASSUMPTIONS["EA"]["note"]))
+    return towline, line_info
+
+
+def _check_towline_keys(p: Problems, t: dict, catalogue) -> None:
+    """Exactly one key of each pair (`_PAIRS`) where the line needs it; none that a
+    composite line's segments set."""
+    if "segments" in t:
+        for k in ("l0", "length", "EA", "EA_nd", "weight", "line", "diameter_mm", "grade"):
+            if k in t:
+                p.error(("towline", k), "a composite line's segments set it: drop the key")
+    for name, pair in _PAIRS.items():
+        given = [k for k in pair if k in t]
+        optional = (
+            (name == "attachment" and "bridle" in t)
+            or (name == "stiffness" and (catalogue is not None or "segments" in t))
+            or (name == "length" and "segments" in t)
+        )
+        if len(given) > 1 or (not given and not optional):
+            what = "one of " + " or ".join(pair)
+            p.error(
+                ("towline", pair[0]),
+                f"give exactly {what}" + (" (got both)" if len(given) == 2 else ""),
+            )
+
+
+def _attachment(p: Problems, t: dict, L: float) -> tuple[float, float]:
+    """(x_p', y_p') of the towline's attachment point: given, or a bridle's apex."""
+    if "bridle" not in t:
+        return (t["xp"] if "xp" in t else t["xp_m"] / L), t["yp"]
+    b = t["bridle"]
+    if not isinstance(b, dict) or set(b) != set(_BRIDLE):
+        p.error(("towline", "bridle"), f"expected {{{', '.join(k + ' = ...' for k in _BRIDLE)}}}")
+    if "xp" in t or "xp_m" in t:
+        p.error(("towline", "bridle"), "a bridle sets the attachment point: drop xp")
+    try:
+        apex = Bridle.symmetric(*(float(b[k]) for k in _BRIDLE)).apex
+    except ValueError as e:
+        p.error(("towline", "bridle"), str(e))
+    return float(apex[0]), float(apex[1])
+
+
+# ---------------------------------------------------------------------- [tug], [route]
+
+
+def _tug(p: Problems, g: dict) -> Tug | None:
+    """The tug of [tug]: a quadratic pull curve or a pull table (None: no tug given)."""
+    if not any(k in g for k in ("bollard_pull_t", "free_speed", "speeds", "pulls_t")):
+        return None
+    tonne = 9.80665e3
+    eff = dict(efficiency=g["efficiency"], resistance_coefficient=g["resistance_coefficient"])
+    try:
+        if "speeds" in g or "pulls_t" in g:
+            for k in ("speeds", "pulls_t"):
+                if k not in g:
+                    p.error(("tug", k), "a pull table needs both speeds and pulls_t")
+            if len(g["speeds"]) != len(g["pulls_t"]):
+                p.error(("tug", "pulls_t"), "needs as many values as speeds")
+            return Tug.from_table(g["speeds"], np.asarray(g["pulls_t"]) * tonne, **eff)
+        for k in ("bollard_pull_t", "free_speed"):
+            if k not in g:
+                p.error(
+                    ("tug", k),
+                    "missing key: give bollard_pull_t and free_speed, or speeds and pulls_t",
+                )
+        return Tug(bollard_pull=g["bollard_pull_t"] * tonne, free_speed=g["free_speed"], **eff)
+    except ValueError as e:
+        p.error(("tug",), str(e))
+
+
+def _route(p: Problems, r: dict) -> tuple[float | None, float | None]:
+    """(route length [m], water depth [m]) of [route]."""
+    if "length_nm" in r and "length_m" in r:
+        p.error(("route", "length_m"), "give length_nm or length_m, not both")
+    route = r["length_nm"] * 1852.0 if "length_nm" in r else r.get("length_m")
+    return route, r.get("water_depth")
+
+
+# ---------------------------------------------------------------------- [[sea_state]]
+
+
+def _sea_states(p: Problems, seas_raw: list, given: list) -> list:
+    seas = [_sea_state(p, i, s, given[i]) for i, s in enumerate(seas_raw)]
+    names = [s.name for s in seas]
+    if len(set(names)) != len(names):
+        i = next(i for i, n in enumerate(names) if names.index(n) != i)
+        p.error(("sea_state", i, "name"), f"sea-state names must differ; {names[i]!r} is repeated")
+    return seas
+
+
+def _sea_state(p: Problems, i: int, s: dict, given: dict) -> SeaState:
+    """Sea state ``i`` (``s`` checked, ``given`` as written): a built-in one with overrides,
+    or Hs and Tp with wind and current; a Tp outside the physical range is a warning."""
+    if "builtin" in s:
+        if s["builtin"] not in presets.SEA_STATES:
+            p.error(
+                ("sea_state", i, "builtin"),
+                f"unknown sea state {s['builtin']!r}; built-in: {', '.join(presets.SEA_STATES)}",
+            )
+        for k, val in presets.SEA_STATES[s["builtin"]].items():
+            if k not in given:
+                s[k] = float(val)
+        s.setdefault("name", s["builtin"])
+    for k in ("hs", "tp"):
+        if k not in s:
+            p.error(
+                ("sea_state", i, k), "missing key: every sea state needs hs and tp (or a builtin)"
+            )
+    s.setdefault("name", f"sea state {i + 1}")
+    if s["hs"] > 0:
+        lo, hi = (float(x) for x in physical_tp_range(s["hs"]))
+        if not lo <= s["tp"] <= hi:
+            p.warn(
+                ("sea_state", i, "tp"),
+                f"Tp = {s['tp']:g} s is outside the physical range {lo:.2f}-{hi:.2f} s for "
+                f"Hs = {s['hs']:g} m (thesis eq. 3.5): such a sea is steeper or flatter than "
+                "wind seas are",
+            )
+    kw = {k: s[k] for k in ("hs", "tp", "gamma", "wind_speed", "current_speed")}
+    for k in ("wave_angle", "wind_angle", "current_angle"):
+        kw[k] = math.radians(s[f"{k}_deg"])
+    try:
+        return SeaState(**kw, name=s["name"])
+    except ValueError as e:
+        p.error(("sea_state", i), str(e))
 
 
 _SEGMENT_KEYS = {"line", "diameter_mm", "length", "grade"}

@@ -14,7 +14,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
-from .. import _rules as V
+from .._rules import POSITIVE, Checked, at_least, check_positive, guard, is_concrete, rule_field
 
 #: g used by the thesis's sea-state relations (127.53 = 13 g and 294.30 = 30 g, eq. 3.5).
 G_THESIS = 9.81
@@ -44,7 +44,7 @@ def check_ascending(omega, name: str = "omega") -> None:
     """Eager check of an integration grid (skipped when traced): a finite 1-D array of at
     least two strictly ascending values. On a descending grid the trapezoidal rule changes
     sign; ValueError naming ``name`` instead."""
-    if not V.is_concrete(omega):
+    if not is_concrete(omega):
         return
     w = np.asarray(omega, dtype=float)
     if w.ndim != 1 or w.size < 2 or not np.all(np.isfinite(w)):
@@ -83,16 +83,16 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
     given ω grid (trapezoidal m0), as wavespectra does; the choice is explicit.
     Concrete invalid inputs (Hs <= 0, Tp <= 0, γ < 1) raise ValueError naming the parameter.
     """
-    V.POSITIVE.check("hs", hs)
-    V.POSITIVE.check("tp", tp)
+    POSITIVE.check("hs", hs)
+    POSITIVE.check("tp", tp)
     GAMMA_RULE.check("gamma", gamma)
     s = _jonswap(omega, hs, tp, gamma, sigma_a, sigma_b, normalise)
     # under jit or vmap the eager checks cannot see the values: the same rules, traced
-    return V.guard(
+    return guard(
         s,
         [
-            V.POSITIVE.traced("hs", hs),
-            V.POSITIVE.traced("tp", tp),
+            POSITIVE.traced("hs", hs),
+            POSITIVE.traced("tp", tp),
             GAMMA_RULE.traced("gamma", gamma),
         ],
     )
@@ -106,11 +106,11 @@ def pierson_moskowitz(omega, *, hs, tp):
     (= 487/1.52) already holds the JONSWAP γ = 3.3 normalisation, and with γ = 1 it gives
     4√m0 = 0.81 Hs.
     """
-    V.POSITIVE.check("hs", hs)
-    V.POSITIVE.check("tp", tp)
-    return V.guard(
+    POSITIVE.check("hs", hs)
+    POSITIVE.check("tp", tp)
+    return guard(
         _pierson_moskowitz(omega, hs, tp),
-        [V.POSITIVE.traced("hs", hs), V.POSITIVE.traced("tp", tp)],
+        [POSITIVE.traced("hs", hs), POSITIVE.traced("tp", tp)],
     )
 
 
@@ -121,7 +121,7 @@ def _pierson_moskowitz(omega, hs, tp):
     return jnp.where(pos, 5.0 / 16.0 * hs**2 * wp**4 * w**-5 * jnp.exp(-1.25 * (wp / w) ** 4), 0.0)
 
 
-class AbstractSpectrum(V.Checked):
+class AbstractSpectrum(Checked):
     """A sea state as a pytree: ``spectrum(omega)`` → S(ω) [m²s/rad].
 
     Its fields are checked by their rules: eagerly at construction, and under tracing by
@@ -143,17 +143,17 @@ class AbstractSpectrum(V.Checked):
 
 
 #: The rule of the JONSWAP peak-enhancement factor γ (γ = 1 is Pierson-Moskowitz).
-GAMMA_RULE = V.at_least(1.0)
+GAMMA_RULE = at_least(1.0)
 
 
 class Jonswap(AbstractSpectrum):
     """JONSWAP sea state (thesis eq. 3.1); ``normalise`` as in `jonswap`."""
 
-    hs: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    tp: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    gamma: Float[Array, ""] = V.rule_field(rule=GAMMA_RULE, default=3.3)
-    sigma_a: Float[Array, ""] = V.rule_field(rule=V.POSITIVE, default=0.07)
-    sigma_b: Float[Array, ""] = V.rule_field(rule=V.POSITIVE, default=0.09)
+    hs: Float[Array, ""] = rule_field(rule=POSITIVE)
+    tp: Float[Array, ""] = rule_field(rule=POSITIVE)
+    gamma: Float[Array, ""] = rule_field(rule=GAMMA_RULE, default=3.3)
+    sigma_a: Float[Array, ""] = rule_field(rule=POSITIVE, default=0.07)
+    sigma_b: Float[Array, ""] = rule_field(rule=POSITIVE, default=0.09)
     normalise: bool = eqx.field(static=True, default=False)
 
     def __call__(self, omega):
@@ -165,8 +165,8 @@ class Jonswap(AbstractSpectrum):
 class PiersonMoskowitz(AbstractSpectrum):
     """Pierson-Moskowitz sea state (see `pierson_moskowitz`)."""
 
-    hs: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
-    tp: Float[Array, ""] = V.rule_field(rule=V.POSITIVE)
+    hs: Float[Array, ""] = rule_field(rule=POSITIVE)
+    tp: Float[Array, ""] = rule_field(rule=POSITIVE)
 
     def __call__(self, omega):
         return _pierson_moskowitz(omega, self.hs, self.tp)
@@ -193,7 +193,7 @@ def spectral_periods(omega, S) -> dict:
 def physical_tp_range(hs):
     """Physical peak-period range for a given Hs, thesis eq. 3.5 [s]:
     √(127.53 Hs/g) ≤ Tp ≤ √(294.30 Hs/g) (i.e. √(13 Hs) ≤ Tp ≤ √(30 Hs) with g = 9.81)."""
-    V.check_positive("hs", hs)
+    check_positive("hs", hs)
     hs = jnp.asarray(hs)
     return jnp.sqrt(127.53 * hs / G_THESIS), jnp.sqrt(294.30 * hs / G_THESIS)
 
