@@ -279,7 +279,9 @@ def test_cli_tow_show_new_and_errors(tmp_path, capsys):
     with pytest.raises(SystemExit, match="exists"):
         main(["tow", "new", str(f)])
     f.write_text(BARGE2A.replace("l0 = 2.5", "l0 = -1"))
-    with pytest.raises(SystemExit, match=r"line \d+, key towline\.l0: must be > 0"):
+    with pytest.raises(
+        SystemExit, match=r"line \d+, key towline\.l0: Expected `float` > 0\.0, got -1"
+    ):
         main(["tow", "show", str(f)])
     with pytest.raises(SystemExit, match=r"error: .*key towline\.l0"):
         main(["equilibria", "--tow", str(f)])

@@ -1,5 +1,6 @@
 """The tow file's schema: every section and key with its type, units, rule and default, the
-errors that name the key and its line, and the writer of the resolved file (tomli-w).
+typed structs that read each section (msgspec, made from the schema), the errors that name
+the key and its line, and the writer of the resolved file (tomli-w).
 
 The schema is data (`SCHEMA`): the reader, the template and the documentation
 (docs/towfile.md) all follow it, so a key is declared in one place.
@@ -11,9 +12,11 @@ import math
 import re
 import warnings
 from dataclasses import dataclass, field
-from typing import NoReturn
+from typing import Annotated, Any, NoReturn
 
+import msgspec
 import tomli_w
+from msgspec import UNSET, Meta, UnsetType
 
 __all__ = ["TowFileError", "TowFileWarning", "Key", "SCHEMA", "ARRAYS", "locate", "to_toml"]
 
@@ -222,71 +225,95 @@ REQUIRED = ("tow", "vessel")
 
 
 class Invalid(ValueError):
-    """A value of the wrong kind or outside its rule (the message says which)."""
+    """A value of the wrong kind or outside its rule (the message says which; ``key`` names
+    the key where a section was checked)."""
+
+    def __init__(self, message: str, key: str | None = None):
+        super().__init__(message)
+        self.key = key
+
+
+#: Each kind's type (msgspec converts and checks it) and each rule's constraint.
+_RULES = {
+    None: Meta(),
+    "finite": Meta(),
+    "positive": Meta(gt=0),
+    "nonnegative": Meta(ge=0),
+    "unit": Meta(gt=0, le=1),
+}
+_GRID = tuple[float, float, Annotated[int, Meta(ge=1)]]
+
+
+def _type(key: Key):
+    kinds = {
+        "float": Annotated[float, _RULES[key.rule]],
+        "int": Annotated[int, _RULES[key.rule]],
+        "str": str,
+        "bool": bool,
+        "floats": list[float],
+        "grid": _GRID,
+        "table": str | dict[str, Any],
+        "tables": Annotated[list[dict[str, Any]], Meta(min_length=1)],
+    }
+    return kinds[key.kind]
+
+
+def section_struct(name: str, keys: dict[str, Key]) -> type[msgspec.Struct]:
+    """The typed struct of one section: every key optional (a missing key is UNSET), unknown
+    keys refused."""
+    fields = [(k, _type(key) | UnsetType, UNSET) for k, key in keys.items()]
+    return msgspec.defstruct(f"{name}_section", fields, kw_only=True, forbid_unknown_fields=True)
+
+
+def _reason(error: msgspec.ValidationError, value) -> str:
+    """msgspec's sentence without its path, with the value where it does not name it."""
+    text = str(error).split(" - at `", 1)[0]
+    return f"{text} ({value!r})" if " got " in text else f"{text}, got {value!r}"
+
+
+def _checked(key: str, kind: str, value):
+    """Rules msgspec does not state: finite numbers, a grid's hi > lo."""
+    if kind in ("float", "int") and not math.isfinite(value):
+        raise Invalid(f"must be finite, got {value!r}")
+    if kind == "floats" and not all(math.isfinite(x) for x in value):
+        raise Invalid(f"must be finite numbers, got {value!r}")
+    if kind == "grid":
+        lo, hi, n = value
+        if not (math.isfinite(lo) and math.isfinite(hi)):
+            raise Invalid(f"must be finite, got {list(value)!r}")
+        if n > 1 and not hi > lo:
+            raise Invalid(f"needs hi > lo, got [{lo:g}, {hi:g}]")
+        return [float(lo), float(hi), int(n)]
+    return value
+
+
+def check_section(name: str, table: dict, keys: dict[str, Key] | None = None) -> dict:
+    """The keys of ``table`` (a section's known keys) converted by the section's typed struct
+    and checked by their rules: {key: value} of the keys given; `Invalid` with the key
+    otherwise (``Invalid.key``)."""
+    keys = SCHEMA[name] if keys is None else keys
+    struct = _STRUCTS.get(name) if keys is SCHEMA.get(name) else section_struct(name, keys)
+    try:
+        obj = msgspec.convert(table, struct, strict=True)
+    except msgspec.ValidationError as e:
+        m = re.search(r" - at `\$\.(\w+)", str(e))
+        k = m.group(1) if m else None
+        raise Invalid(_reason(e, table.get(k) if k else table), key=k) from None
+    out = {}
+    for k in keys:
+        v = getattr(obj, k)
+        if v is UNSET:
+            continue
+        try:
+            out[k] = _checked(k, keys[k].kind, v)
+        except Invalid as e:
+            raise Invalid(str(e), key=k) from None
+    return out
 
 
 def check_value(key: Key, value):
-    """``value`` converted to the key's kind; `Invalid` saying what is wrong otherwise."""
-    got = _check(key, value)
-    if isinstance(got, _Bad):
-        raise Invalid(got.message)
-    return got
-
-
-@dataclass(frozen=True)
-class _Bad:
-    message: str
-
-
-def _check(key: Key, value):
-    kind = key.kind
-    if kind in ("float", "int"):
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            return _Bad(f"expected a number, got {type(value).__name__} {value!r}")
-        v = float(value)
-        if not math.isfinite(v):
-            return _Bad(f"must be finite, got {value!r}")
-        rule = key.rule
-        if rule == "positive" and not v > 0:
-            return _Bad(f"must be > 0, got {value!r}")
-        if rule == "nonnegative" and not v >= 0:
-            return _Bad(f"must be >= 0, got {value!r}")
-        if rule == "unit" and not 0 < v <= 1:
-            return _Bad(f"must be in (0, 1], got {value!r}")
-        return v
-    if kind == "str":
-        return value if isinstance(value, str) else _Bad(f"expected a string, got {value!r}")
-    if kind == "bool":
-        return value if isinstance(value, bool) else _Bad(f"expected true or false, got {value!r}")
-    if kind == "table":
-        if isinstance(value, (str, dict)):
-            return value
-        return _Bad(f"expected a string or an inline table, got {value!r}")
-    if kind == "tables":
-        if not isinstance(value, list) or not value or not all(isinstance(x, dict) for x in value):
-            return _Bad(f"expected a list of inline tables, got {value!r}")
-        return value
-    if kind == "floats":
-        if not isinstance(value, list) or not all(
-            isinstance(x, (int, float)) and not isinstance(x, bool) for x in value
-        ):
-            return _Bad(f"expected a list of numbers, got {value!r}")
-        return [float(x) for x in value]
-    if kind == "grid":
-        ok = (
-            isinstance(value, list)
-            and len(value) == 3
-            and all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value)
-        )
-        if not ok:
-            return _Bad(f"expected [lo, hi, n], got {value!r}")
-        lo, hi, n = value
-        if not (float(n) == int(n) and int(n) >= 1):
-            return _Bad(f"n must be a whole number >= 1, got {n!r}")
-        if int(n) > 1 and not hi > lo:
-            return _Bad(f"needs hi > lo, got [{lo}, {hi}]")
-        return [float(lo), float(hi), int(n)]
-    raise AssertionError(kind)
+    """One value converted to ``key``'s kind and checked by its rule; `Invalid` otherwise."""
+    return check_section("value", {"value": value}, {"value": key})["value"]
 
 
 _HEADER = re.compile(r"^\s*(\[\[?)\s*([A-Za-z0-9_.\-]+)\s*\]\]?")
@@ -419,3 +446,7 @@ def schema_markdown() -> str:
             out.append(f"| `{k}` | {key.units} | {dflt} | {key.doc.replace('|', chr(92) + '|')} |")
         out.append("")
     return "\n".join(out)
+
+
+#: The typed struct of each section (made from `SCHEMA`, so a key is still declared once).
+_STRUCTS = {name: section_struct(name, keys) for name, keys in SCHEMA.items()}

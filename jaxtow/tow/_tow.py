@@ -46,6 +46,7 @@ from ._schema import (
     Key,
     Problems,
     TowFileError,
+    check_section,
     check_value,
     to_toml,
 )
@@ -262,20 +263,21 @@ def _line_of(message: str):
 
 
 def _check_section(p: Problems, name: str, table, index=None) -> dict:
+    """A section read by its typed struct (`jaxtow.tow._schema.check_section`), with a
+    suggestion for an unknown key and the schema's defaults filled in."""
     path = (name,) if index is None else (name, index)
     if not isinstance(table, dict):
         p.error(path, "expected a table")
     keys = SCHEMA[name]
-    out = {}
-    for k, v in table.items():
+    for k in table:
         if k not in keys:
             close = [c for c in keys if c.lower() == k.lower() or c.startswith(k[:3])]
             hint = f"; did you mean {close[0]!r}?" if close else ""
             p.error(path + (k,), f"unknown key{hint} (keys of [{name}]: {', '.join(keys)})")
-        try:
-            out[k] = check_value(keys[k], v)
-        except Invalid as e:
-            p.error(path + (k,), str(e))
+    try:
+        out = check_section(name, table)
+    except Invalid as e:
+        p.error(path + ((e.key,) if e.key else ()), str(e))
     for k, key in keys.items():
         if k not in out and key.default is not None:
             out[k] = list(key.default) if isinstance(key.default, list) else key.default
