@@ -164,6 +164,12 @@ def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
     )
 
 
+def bisection_atol(dtype) -> float:
+    """The heading tolerance of the equilibrium bisection [rad]: 1e-13 in float64, and 16 ulp
+    of a heading of order one in float32 (1.9e-6), whose resolution 1e-13 is far below."""
+    return max(1e-13, 16.0 * float(jnp.finfo(dtype).eps))
+
+
 def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, max_steps: int):
     """Root of F on [lo, hi] (where F takes the values ``f_lo``, ``f_hi``) to machine
     precision: bisection, then a two-step Newton polish (`jaxtow._roots`)."""
@@ -172,7 +178,7 @@ def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, max_steps: int):
         lo,
         hi,
         model,
-        atol=1e-13,
+        atol=bisection_atol(jnp.result_type(lo)),
         max_steps=max_steps,
         f_lo=f_lo,
         f_hi=f_hi,

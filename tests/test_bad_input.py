@@ -520,3 +520,54 @@ def test_wave_synthesis_on_a_descending_grid_is_refused():
     assert np.all(np.isfinite(jt.waves.synthesise_elevation(key, w, S, t)))
     with pytest.raises(ValueError, match="'omega' must be strictly ascending"):
         jt.waves.synthesise_elevation(key, w[::-1], S[::-1], t)
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (
+            ["map", "--param", "xp", "0", "1", "3", "--chunk-size", "0"],
+            "argument --chunk-size: expected a whole number >= 1, got 0",
+        ),
+        (
+            ["map", "--param", "xp", "0", "1", "3", "--max-roots", "0"],
+            "argument --max-roots: expected a whole number >= 1, got 0",
+        ),
+        (["simulate", "--psi0", "nan"], "argument --psi0: expected a finite number, got nan"),
+        (["simulate", "--t1", "-5"], "argument --t1: expected a finite number > 0, got -5"),
+        (["report", "waves", "--n", "-3"], "argument --n: expected a whole number >= 1, got -3"),
+        (["calm", "--out", "/proc/jaxtow-out"], "--out /proc/jaxtow-out: cannot write there"),
+    ],
+)
+def test_cli_messages_name_the_flag(argv, message, capsys):
+    """A bad command-line value is refused before anything runs, naming the flag (not the
+    Python parameter behind it) and the value."""
+    assert message in _cli_error(argv, capsys)
+
+
+def test_an_unknown_waterline_method_and_an_empty_speed_scan_are_named():
+    wl = jt.presets.box_waterline()
+    with pytest.raises(ValueError, match="parameter 'method': 'nosuch' is not a waterline drift"):
+        jt.drift.irregular_drift("nosuch", wl, 2.0, 7.0, 0.0)
+    tow, tug = jt.presets.barge2_resistance("2a"), jt.presets.illustrative_tug()
+    with pytest.raises(
+        ValueError, match="parameter 'n_scan' must be a whole number of speeds >= 2"
+    ):
+        jt.resistance.operating_speed(tow, tug, jt.presets.sea_state("sailing"), n_scan=0)
+
+
+@pytest.mark.parametrize(
+    "cfg, message",
+    [
+        ({"hull": {"panel_size": "a"}}, "config [hull] panel_size: expected a number, got 'a'"),
+        ({"waves": {"omega": [0.1, "x", 3]}}, "config [waves] omega: expected a number, got 'x'"),
+        ({"waves": {"water_depth": "deep"}}, "config [waves] water_depth: expected a number"),
+        ({"waves": {"beta_deg": [0, 180, 2.5]}}, "count must be a whole number >= 1, got 2.5"),
+    ],
+)
+def test_a_bem_config_names_the_key_that_is_not_a_number(cfg, message):
+    from jaxtow.cli.bem import build
+
+    with pytest.raises(ValueError) as e:
+        build(cfg)
+    assert message in str(e.value)

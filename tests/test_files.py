@@ -405,6 +405,24 @@ def test_round_trip_keeps_the_full_circle(tmp_path):
     np.testing.assert_allclose(np.asarray(back.values), np.asarray(q.values), rtol=1e-14, atol=1e-9)
 
 
+@pytest.mark.parametrize("side", ["0..180", "-180..0", "0..90", "90..180"])
+def test_round_trip_keeps_a_half_table_grid(side, tmp_path):
+    """Write -> read of a table on one side returns its grid: the following-sea column at
+    +180 deg (written at WAMIT's 0 deg) reads back as +180, not as a -180 column beside it."""
+    q = jt.presets.database("barge2", "far_field")
+    b, w, v = np.asarray(q.beta), np.asarray(q.omega), np.asarray(q.values)
+    lo, hi = (np.radians(float(x)) for x in side.split(".."))
+    keep = (b >= lo - 1e-9) & (b <= hi + 1e-9)
+    half = jt.drift.QTF(omega=w, beta=b[keep], fx=v[0][:, keep], fy=v[1][:, keep], nz=v[2][:, keep])
+    jt.io.write_wamit_drift(half, tmp_path / "h.8")
+    back = jt.io.read_wamit_drift(tmp_path / "h.8", symmetry="none")
+    assert back.beta.shape == half.beta.shape
+    np.testing.assert_allclose(np.asarray(back.beta), np.asarray(half.beta), rtol=0, atol=1e-12)
+    np.testing.assert_allclose(
+        np.asarray(back.values), np.asarray(half.values), rtol=1e-13, atol=1e-9
+    )
+
+
 # --------------------------------------------------------------------------- the full QTF
 
 

@@ -176,7 +176,15 @@ def _lock_output(out):
     path = Path(out)
     if path.exists() and not path.is_dir():
         raise SystemExit(f"error: --out {out} is a file; give a folder for the outputs")
-    path.mkdir(parents=True, exist_ok=True)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+        probe = path / ".jaxtow.write-test"
+        probe.touch()
+        probe.unlink()
+    except OSError as e:
+        raise SystemExit(
+            f"error: --out {out}: cannot write there ({e.strerror or e}); give a folder you can write to"
+        ) from None
     lock = FileLock(path / ".jaxtow.lock", is_singleton=False)
     try:
         lock.acquire(timeout=0)

@@ -197,12 +197,20 @@ def _time_domain(model, vname, args, out: Path) -> dict:
 
 
 def _time_domain_options(p, t1_default=400.0):
-    p.add_argument("--psi0", type=float, default=0.0, help="initial heading [deg] (default 0)")
     p.add_argument(
-        "--y0", type=float, default=0.3, help="initial sway offset of the CoG [L] (default 0.3)"
+        "--psi0", type=finite_float, default=0.0, help="initial heading [deg] (default 0)"
     )
     p.add_argument(
-        "--t1", type=float, default=t1_default, help="run length, non-dimensional (by L/U_tug)"
+        "--y0",
+        type=finite_float,
+        default=0.3,
+        help="initial sway offset of the CoG [L] (default 0.3)",
+    )
+    p.add_argument(
+        "--t1",
+        type=positive_float,
+        default=t1_default,
+        help="run length, non-dimensional (by L/U_tug)",
     )
     p.add_argument("--n-save", type=int, default=4001, help="saved samples")
     p.add_argument("--solver", default="auto", choices=("auto", "tsit5", "kvaerno5"))
@@ -217,6 +225,17 @@ def positive_int(text: str) -> int:
     if n < 1:
         raise argparse.ArgumentTypeError(f"expected a whole number >= 1, got {n}")
     return n
+
+
+def finite_float(text: str) -> float:
+    """argparse type: a finite number."""
+    try:
+        x = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not math.isfinite(x):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text}")
+    return x
 
 
 def positive_float(text: str) -> float:

@@ -41,10 +41,25 @@ def read_config(config) -> dict:
     return _read_config(config, BUILTIN)
 
 
+def _number(value, where: str) -> float:
+    """A config value as a number; an error naming the key otherwise."""
+    if isinstance(value, bool):
+        raise ValueError(f"config {where}: expected a number, got {value!r}")
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"config {where}: expected a number, got {value!r}") from None
+
+
 def _config_grid(spec, name):
-    if not (isinstance(spec, list) and len(spec) == 3 and int(spec[2]) >= 1):
+    if not (isinstance(spec, list) and len(spec) == 3):
         raise ValueError(f"config [waves] {name}: expected [start, stop, count], got {spec!r}")
-    return np.linspace(float(spec[0]), float(spec[1]), int(spec[2]))
+    lo, hi, n = (_number(x, f"[waves] {name}") for x in spec)
+    if n != int(n) or n < 1:
+        raise ValueError(
+            f"config [waves] {name}: count must be a whole number >= 1, got {spec[2]!r}"
+        )
+    return np.linspace(lo, hi, int(n))
 
 
 def build(cfg: dict, panel_size: float | None = None):
@@ -61,15 +76,19 @@ def build(cfg: dict, panel_size: float | None = None):
         raise ValueError(f"config: unknown section(s) {sorted(extra)}; allowed: {sorted(_KEYS)}")
     h, m, w = cfg.get("hull", {}), cfg.get("mass", {}), cfg.get("waves", {})
     kind = h.get("kind", "box")
-    size = float(panel_size if panel_size is not None else h.get("panel_size", 1.0))
-    grading = float(h.get("grading", 0.0))
+    size = (
+        float(panel_size)
+        if panel_size is not None
+        else _number(h.get("panel_size", 1.0), "[hull] panel_size")
+    )
+    grading = _number(h.get("grading", 0.0), "[hull] grading")
     if kind == "box":
 
         def builder(p):
             return jt.bem.raked_barge_mesh(
-                float(h.get("length", 76.2)),
-                float(h.get("breadth", 24.4)),
-                float(h.get("draft", 5.0)),
+                _number(h.get("length", 76.2), "[hull] length"),
+                _number(h.get("breadth", 24.4), "[hull] breadth"),
+                _number(h.get("draft", 5.0), "[hull] draft"),
                 0.0,
                 panel_size=p,
                 grading=grading,
@@ -90,7 +109,11 @@ def build(cfg: dict, panel_size: float | None = None):
     omega = _config_grid(w.get("omega", [0.05, 2.5, 61]), "omega")
     beta = np.radians(_config_grid(w.get("beta_deg", [0, 180, 25]), "beta_deg"))
     depth = w.get("water_depth", "inf")
-    depth = math.inf if str(depth).lower() in ("inf", "infinity") else float(depth)
+    depth = (
+        math.inf
+        if str(depth).lower() in ("inf", "infinity")
+        else _number(depth, "[waves] water_depth")
+    )
     kw = dict(
         cog_z=m.get("cog_z"),
         roll_damping=m.get("roll_damping"),

@@ -19,6 +19,7 @@ from ._common import (
     _tow_names,
     _tow_option,
     grid_option,
+    positive_int,
 )
 
 
@@ -119,7 +120,9 @@ def add_parser(sub):
     )
     c.add_argument("--map-xp", nargs=3, default=(0.0, 0.6, 61), metavar=("LO", "HI", "N"))
     c.add_argument("--map-l0", nargs=3, default=(0.2, 2.5, 47), metavar=("LO", "HI", "N"))
-    c.add_argument("--chunk-size", type=int, default=16384, help="points per vmapped chunk")
+    c.add_argument(
+        "--chunk-size", type=positive_int, default=16384, help="points per vmapped chunk"
+    )
     c.add_argument("--quiet", action="store_true", help="no progress bar")
     c.add_argument(
         "--no-time-domain",

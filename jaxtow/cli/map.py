@@ -7,7 +7,7 @@ from pathlib import Path
 
 import jaxtow as jt
 
-from ._common import _common, _model, _parse_sets, _tow_option, grid_option
+from ._common import _common, _model, _parse_sets, _tow_option, grid_option, positive_int
 
 
 def cmd_map(args):
@@ -84,9 +84,11 @@ def add_parser(sub):
         default="numerical",
         help="equilibrium solver (analytic: calm water, elastic line only)",
     )
-    m.add_argument("--max-roots", type=int, default=4, help="equilibrium slots per point")
+    m.add_argument("--max-roots", type=positive_int, default=4, help="equilibrium slots per point")
     m.add_argument("--out", default="results", help="output folder")
-    m.add_argument("--chunk-size", type=int, default=16384, help="points per vmapped chunk")
+    m.add_argument(
+        "--chunk-size", type=positive_int, default=16384, help="points per vmapped chunk"
+    )
     m.add_argument("--quiet", action="store_true", help="no progress bar")
     _common(m)
     m.set_defaults(func=cmd_map)

@@ -15,6 +15,7 @@ import jaxtow as jt
 
 from ..io._atomic import write_file
 from ..reports._claims import SOURCE_NAMES, SOURCES, claims_markdown, claims_table
+from ._common import positive_float, positive_int
 
 
 def _figures(study, out: Path, summary: dict, progress: bool) -> None:
@@ -245,7 +246,7 @@ def _attribution_options(r) -> None:
     )
     r.add_argument(
         "--attribution-n",
-        type=int,
+        type=positive_int,
         default=None,
         help="map points per axis of the attribution re-runs (default n // 2, at least 9)",
     )
@@ -273,18 +274,18 @@ def _study_options(r) -> None:
     )
     r.add_argument(
         "--n",
-        type=int,
+        type=positive_int,
         default=41,
         help="points per map axis (41: the six source/form studies took 88 min on 2 loaded "
         "cores and the whole report about 2 h; --sources/--forms to run fewer)",
     )
     r.add_argument(
         "--n-grid",
-        type=int,
+        type=positive_int,
         default=401,
         help="heading-scan points over ±90 deg of the equilibrium search",
     )
-    r.add_argument("--t1", type=float, default=400.0, help="time-domain run length [L/U]")
+    r.add_argument("--t1", type=positive_float, default=400.0, help="time-domain run length [L/U]")
     r.add_argument(
         "--wind",
         type=float,

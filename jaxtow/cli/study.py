@@ -10,6 +10,7 @@ from pathlib import Path
 import jaxtow as jt
 
 from ..io._atomic import write_file
+from ._common import positive_float
 from .tow import load_tow
 
 
@@ -82,7 +83,7 @@ def add_parser(sub):
         metavar=("LO", "HI", "N"),
         help="override [study] speeds [m/s]",
     )
-    p.add_argument("--t1", type=float, default=None, help="override [study] t1")
+    p.add_argument("--t1", type=positive_float, default=None, help="override [study] t1")
     p.add_argument("--no-time-domain", action="store_true", help="skip the time-domain check")
     p.add_argument("--quiet", action="store_true", help="no progress output")
     p.set_defaults(func=cmd_study)

@@ -78,10 +78,23 @@ def irregular_drift(method, wl, hs, tp, beta, u=0.0, v=0.0, *, omega=None, gamma
     return guard(method_mean_drift(method, wl, w, sea(w), beta, u, v, **kwargs), sea.checks())
 
 
+def method_function(method):
+    """The waterline method ``method`` (a function of `METHODS` or its name); a name that is
+    not one is an error that lists them."""
+    if not isinstance(method, str):
+        return method
+    if method not in METHODS:
+        raise ValueError(
+            f"parameter 'method': {method!r} is not a waterline drift method; choose from "
+            f"{', '.join(METHODS)}"
+        )
+    return METHODS[method]
+
+
 def method_mean_drift(method, wl, omega, S, beta, u=0.0, v=0.0, **kwargs):
     """`irregular_drift` for a spectrum ``S`` already evaluated on ``omega`` (unchecked:
     the caller holds a checked sea state)."""
-    fn = METHODS[method] if isinstance(method, str) else method
+    fn = method_function(method)
     return mean_drift(omega, S, fn(wl, omega, beta, u, v, **kwargs).force)
 
 
@@ -93,7 +106,7 @@ def qtf_from_method(method, wl, omega, beta, **kwargs):
     motion-induced drift in the motion zone); the forward-speed effect then comes from the
     encounter frequency and Aranha's wave-drift damping of the QTF."""
 
-    fn = METHODS[method] if isinstance(method, str) else method
+    fn = method_function(method)
     w = jnp.asarray(omega, float)
     b = np.asarray(beta, float)
     F = np.array(jax.vmap(lambda bb: fn(wl, w, bb, **kwargs).force)(jnp.asarray(b)))  # (nb, nw, 3)

@@ -93,8 +93,15 @@ def _shift_yaw(fx, fy, nz, ref):
 
 
 def _heading_deg(beta_wamit_deg):
-    """jaxtow headings [deg] in [−180, 180) from travel-to headings, rounded to 1e-6 deg."""
-    return np.round((np.asarray(beta_wamit_deg, float) % 360.0) - 180.0, 6)
+    """jaxtow headings [deg] from travel-to headings, rounded to 1e-6 deg: in [−180, 180),
+    except that a following-sea column of a table on the positive side (0° … 180°, which a
+    writer puts at travel-to 0°) reads as +180°, next to the headings it continues, not as
+    −180° across the gap; so writing a table and reading it back returns its grid."""
+    deg = np.round((np.asarray(beta_wamit_deg, float) % 360.0) - 180.0, 6)
+    others = np.unique(deg[deg != -180.0])
+    if others.size and (deg == -180.0).any() and others[0] + 180.0 > 180.0 - others[-1]:
+        deg = np.where(deg == -180.0, 180.0, deg)
+    return deg
 
 
 def _reference(reference_point, listing):

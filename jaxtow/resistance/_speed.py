@@ -141,6 +141,10 @@ def operating_speed(
     """
     if is_concrete(tug.bollard_pull):
         check_positive("bollard_pull", tug.bollard_pull)
+    if isinstance(n_scan, bool) or int(n_scan) != n_scan or int(n_scan) < 2:
+        raise ValueError(
+            f"parameter 'n_scan' must be a whole number of speeds >= 2, got {n_scan!r}"
+        )
     p = _operating_point(tow, tug, sea, jnp.asarray(heading, float), int(n_scan), float(rtol))
     if not throw:
         return p
