@@ -94,15 +94,15 @@ _SHARD_SCRIPT = textwrap.dedent("""
     assert len(jax.devices()) == 4, jax.devices()
     m = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.presets.default_towline())
     grid = {"xp": np.linspace(0.0, 0.6, 13), "l0": np.linspace(0.2, 2.5, 7)}
-    a = jt.sweep_arrays(m, grid, chunk_size=32)                         # 4 devices
+    a = jt.sweep_arrays(m, grid, *jt.sweep_options(chunk_size=32))                # 4 devices
     # the default pure-JAX spectral abscissa shards; compare like with like: the same
     # per-device program (8 points per device) must give bit-identical results
-    b = jt.sweep_arrays(m, grid, chunk_size=8, devices=jax.devices()[:1], eig_method="routh")
-    c = jt.sweep_arrays(m, grid, chunk_size=32, devices=jax.devices()[:1], eig_method="lapack")
+    b = jt.sweep_arrays(m, grid, *jt.sweep_options(chunk_size=8, devices=jax.devices()[:1], eig_method="routh"))
+    c = jt.sweep_arrays(m, grid, *jt.sweep_options(chunk_size=32, devices=jax.devices()[:1], eig_method="lapack"))
     np.testing.assert_allclose(a["max_real"], c["max_real"], atol=1e-9)
     assert a["_eig_method"] == "routh"
     # with every eigenvalue wanted, several CPU devices select the LAPACK-free polynomial roots
-    e = jt.sweep_arrays(m, grid, chunk_size=32, eigenvalues=True)
+    e = jt.sweep_arrays(m, grid, *jt.sweep_options(chunk_size=32, eigenvalues=True))
     assert e["_eig_method"] == "polynomial"
     np.testing.assert_allclose(e["max_real"], c["max_real"], atol=1e-8)
     # a large chunk over 4 CPU devices completes (LAPACK here deadlocked in OpenBLAS)
@@ -140,7 +140,7 @@ _LARGE_SCRIPT = textwrap.dedent("""
     m = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.presets.default_towline())
     grid = {"xp": np.linspace(0.0, 0.6, 61), "l0": np.linspace(0.2, 2.5, 47)}
     for method in ("numerical", "analytic", "numerical"):
-        a = jt.sweep_arrays(m, grid, method=method)
+        a = jt.sweep_arrays(m, grid, jt.SweepSolver(method=method))
     print("LARGE_OK", int(a["n_equilibria"].sum()))
 """)
 
