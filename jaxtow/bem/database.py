@@ -70,7 +70,6 @@ def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
 
 
 def _frequency_dataset(r: dict):
-
     w = [r["omega"]]
     dims_b = ("omega", "beta")
     rao, exc = r["rao"][None], r["excitation"][None]

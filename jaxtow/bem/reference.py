@@ -49,7 +49,6 @@ def wavenumber(omega, depth, g: float = G) -> float:
 
 
 def _series(ka, n_terms):
-
     m = np.arange(n_terms)
     eps = np.where(m == 0, 1.0, 2.0)
     return m, eps * (1j) ** m * 2j / (math.pi * ka * h1vp(m, ka))

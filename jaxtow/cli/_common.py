@@ -86,9 +86,7 @@ def _model(args, tow_name=None, overrides=None, command: str = ""):
             k: getattr(args, k) for k in ("l0", "xp", "EA") if getattr(args, k, None) is not None
         }
         sets.update(overrides or {})
-
-        for k, v in sets.items():
-            jt._parameters.check_values(model, k, v)
+        # with_parameters checks each value by its parameter's rule first
         return (jt.with_parameters(model, **sets) if sets else model), tow.name
     except ValueError as e:
         raise SystemExit(f"error: {e}") from None

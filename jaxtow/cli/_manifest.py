@@ -29,7 +29,6 @@ NAME = "jaxtow_run.json"
 
 
 def _versions() -> dict:
-
     out = {"python": platform.python_version()}
     for pkg in ("jaxtow", "jax", "jaxlib", "equinox", "diffrax", "optimistix", "numpy", "xarray"):
         try:
@@ -98,7 +97,6 @@ class Manifest:
         return found
 
     def _write(self) -> None:
-
         with jt.io._atomic.atomic_path(self.path) as tmp:
             tmp.write_text(json.dumps(self.record, indent=2, default=str) + "\n")
 

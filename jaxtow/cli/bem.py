@@ -276,7 +276,6 @@ def fingerprint(args) -> str | None:
 
 
 def _dispatch(args):
-
     if args.config == "barge2":
         print(
             "jaxtow bem: warning: the name 'barge2' is deprecated and will be removed; use "

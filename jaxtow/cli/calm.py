@@ -24,7 +24,6 @@ from ._common import (
 
 
 def cmd_calm(args):
-
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sets = _parse_sets(args.set)

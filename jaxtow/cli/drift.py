@@ -33,7 +33,6 @@ def _waterline(args):
 
 
 def cmd_drift(args):
-
     if args.base not in jt.drift.METHODS:
         raise SystemExit(
             f"error: --base {args.base!r} is not a drift method; choose from {sorted(jt.drift.METHODS)}"

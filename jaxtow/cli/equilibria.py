@@ -12,7 +12,6 @@ from ._common import _common, _model, _parse_sets, _tow_option
 
 
 def cmd_equilibria(args):
-
     model, _ = _model(args, overrides=_parse_sets(args.set))
     eqs = jt.equilibria(model)
     st = jt.stability(model, eqs.state)

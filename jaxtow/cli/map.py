@@ -11,7 +11,6 @@ from ._common import _common, _model, _parse_sets, _tow_option, grid_option, pos
 
 
 def cmd_map(args):
-
     if not args.param:
         raise SystemExit("error: give at least one --param NAME LO HI N")
     model, tow_name = _model(args, overrides=_parse_sets(args.set))

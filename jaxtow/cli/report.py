@@ -103,7 +103,6 @@ def plan(args):
 
 
 def cmd_report(args):
-
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     progress = not args.quiet

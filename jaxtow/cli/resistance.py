@@ -237,7 +237,6 @@ def add_parser(sub):
 
 
 def _dispatch(args):
-
     if args.show_config and jt.tow.canonical_name(str(args.config))[0] in jt.tow.BUILTIN_TOWS:
         print(load_tow(args.config, "resistance").show())
         return

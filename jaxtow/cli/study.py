@@ -15,7 +15,6 @@ from .tow import load_tow
 
 
 def cmd_study(args):
-
     tow = load_tow(args.tow, "study")
     out = Path(args.out)
     if out.exists() and not out.is_dir():

@@ -35,7 +35,6 @@ def cmd_show(args):
 
 
 def cmd_new(args):
-
     out = Path(args.file)
     if out.exists() and not args.force:
         raise SystemExit(f"jaxtow tow new: error: {out} exists (use --force to overwrite)")

@@ -114,7 +114,6 @@ class TowStudy:
 
 
 def _equilibria_record(model):
-
     eqs = equilibria(model)
     st = stability(model, eqs.state)
     found = np.asarray(eqs.valid)

@@ -70,7 +70,6 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
 
 
 def eqx_tp(sea, tp):
-
     return eqx.tree_at(lambda s: s.tp, sea, tp)
 
 

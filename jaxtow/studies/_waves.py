@@ -104,7 +104,6 @@ class WaveStudy:
     # ------------------------------------------------------------------ building blocks
     @cached_property
     def _source(self):
-
         return drift_source(self.qtf)
 
     @property
@@ -139,14 +138,12 @@ class WaveStudy:
         )
 
     def wave_model(self, version: str = "2a", **kw):
-
         kw = dict(dict(omega=1.0, zeta_a=self.zeta_a), **kw)
         return self._apply(
             barge2_wave_model(version, qtf=self.drift, form=self.form, draft=self.draft, **kw)
         )
 
     def irregular_model(self, version: str = "2a", **kw):
-
         kw = dict(dict(hs=self.hs, tp=float(np.mean(self.axes["tp"]))), **kw)
         return self._apply(
             barge2_irregular_model(version, qtf=self.drift, form=self.form, draft=self.draft, **kw)
@@ -246,7 +243,6 @@ class WaveStudy:
 
     @cached_property
     def calm_counts(self) -> dict:
-
         return {
             v: int(
                 valid_count(
@@ -258,7 +254,6 @@ class WaveStudy:
 
     # ------------------------------------------------------------------ time domain
     def run(self, model, psi0: float = 0.2, y0: float = 0.1):
-
         sim = simulate(model, initial_state(model, psi0=psi0, y0=y0), t1=self.t1, n_save=2001)
         return sim, fishtail_metrics(model, sim)
 

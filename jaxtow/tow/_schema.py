@@ -412,7 +412,6 @@ class Problems:
         raise TowFileError(message, source=self.source, line=locate(self.text, path), key=key)
 
     def warn(self, path: tuple, message: str):
-
         key = ".".join(str(p) if not isinstance(p, int) else f"[{p + 1}]" for p in path)
         key = key.replace(".[", "[")
         line = locate(self.text, path)

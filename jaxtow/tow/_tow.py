@@ -219,7 +219,6 @@ class Tow:
 
 
 def _radians(x):
-
     return np.radians(x)
 
 
@@ -257,7 +256,6 @@ def loads(text: str, source: str = "<string>", base=None) -> Tow:
 
 
 def _line_of(message: str):
-
     m = re.search(r"line (\d+)", message)
     return int(m.group(1)) if m else None
 
@@ -860,7 +858,6 @@ def _field_key(message: str, t: dict) -> str:
 
 
 def _describe_drift(drift, form) -> str:
-
     if isinstance(drift, str) and drift in METHODS:
         return f"waterline method {drift!r} (misses the motion-induced drift where L/lambda < 1)"
     if isinstance(drift, dict) and "mesh" in drift:
