@@ -36,7 +36,7 @@ def grid_option(spec, name):
     return np.linspace(lo, hi, n)
 
 
-def _parse_sets(items):
+def parse_sets(items):
     out = {}
     for item in items or []:
         if "=" not in item:
@@ -49,7 +49,7 @@ def _parse_sets(items):
     return out
 
 
-def _tow_names(args, command: str) -> list:
+def tow_names(args, command: str) -> list:
     """The tow names or files of a subcommand (``--tow``/``--tows``; the old ``--vessel`` /
     ``--vessels`` flags and spellings are accepted with a deprecation message)."""
 
@@ -65,13 +65,13 @@ def _tow_names(args, command: str) -> list:
     return list(names) if isinstance(names, (list, tuple)) else [names]
 
 
-def _model(args, tow_name=None, overrides=None, command: str = ""):
+def tow_model(args, tow_name=None, overrides=None, command: str = ""):
     """(model, tow name): the tow's calm-water model with the command line's overrides
     (``--u-tug`` rescales EA' as `jaxtow.at_tug_speed`; ``--l0``, ``--xp``, ``--EA`` and
     ``--set NAME=VALUE`` set parameters)."""
 
     command = command or getattr(args, "command", "")
-    name = tow_name or _tow_names(args, command)[0]
+    name = tow_name or tow_names(args, command)[0]
     tow = load_tow(name, command)
     if tow.vessel is None or tow.towline is None:
         raise SystemExit(
@@ -92,7 +92,7 @@ def _model(args, tow_name=None, overrides=None, command: str = ""):
         raise SystemExit(f"error: {e}") from None
 
 
-def _tow_option(p, multiple: bool = False, default=("barge2a",)):
+def tow_option(p, multiple: bool = False, default=("barge2a",)):
     """``--tow TOW`` (or ``--tows TOW ...``) and the hidden deprecated ``--vessel(s)``."""
 
     if multiple:
@@ -114,7 +114,7 @@ def _tow_option(p, multiple: bool = False, default=("barge2a",)):
         p.add_argument("--vessel", dest="vessel_old", help=argparse.SUPPRESS)
 
 
-def _common(p):
+def model_options(p):
     p.add_argument(
         "--u-tug",
         type=positive_float,
@@ -147,7 +147,7 @@ def _common(p):
     )
 
 
-def _time_domain(model, vname, args, out: Path) -> dict:
+def run_time_domain(model, vname, args, out: Path) -> dict:
     """Run from the thesis's initial condition, write figures and the run; return metrics."""
 
     try:
@@ -194,7 +194,7 @@ def _time_domain(model, vname, args, out: Path) -> dict:
     return met | dict(n_steps=int(sim.n_steps), validity_share_of_run=share)
 
 
-def _time_domain_options(p, t1_default=400.0):
+def time_domain_options(p, t1_default=400.0):
     p.add_argument(
         "--psi0", type=finite_float, default=0.0, help="initial heading [deg] (default 0)"
     )

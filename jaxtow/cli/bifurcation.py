@@ -8,13 +8,13 @@ from pathlib import Path
 import jaxtow as jt
 
 from ..io._atomic import write_file
-from ._common import _model, _tow_option, positive_float
+from ._common import positive_float, tow_model, tow_option
 
 
 def cmd_bifurcation(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    model, tow_name = _model(args, command="bifurcation")
+    model, tow_name = tow_model(args, command="bifurcation")
     lo, hi = args.range
     try:
         study = jt.studies.bifurcation_study(
@@ -68,7 +68,7 @@ def add_parser(sub):
     b = sub.add_parser(
         "bifurcation", help="equilibrium branches, pitchfork/fold/Hopf points, limit cycles"
     )
-    _tow_option(b)
+    tow_option(b)
     b.add_argument(
         "--param", default="xp", help="continuation parameter (xp, l0, EA, any vessel coefficient)"
     )

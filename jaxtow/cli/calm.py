@@ -11,26 +11,26 @@ import jaxtow as jt
 
 from ..io._atomic import write_file
 from ._common import (
-    _common,
-    _model,
-    _parse_sets,
-    _time_domain,
-    _time_domain_options,
-    _tow_names,
-    _tow_option,
     grid_option,
+    model_options,
+    parse_sets,
     positive_int,
+    run_time_domain,
+    time_domain_options,
+    tow_model,
+    tow_names,
+    tow_option,
 )
 
 
 def cmd_calm(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    sets = _parse_sets(args.set)
+    sets = parse_sets(args.set)
     summary = {}
     opts = dict(method="numerical", progress=not args.quiet, chunk_size=args.chunk_size)
-    for name in _tow_names(args, "calm"):
-        model, vname = _model(args, name, sets, "calm")
+    for name in tow_names(args, "calm"):
+        model, vname = tow_model(args, name, sets, "calm")
         c = float(model.vessel.stability_coefficient())
         ds_xp = jt.sweep(model, {"xp": grid_option(args.xp_grid, "xp-grid")}, **opts)
         ds_l0 = jt.sweep(model, {"l0": grid_option(args.l0_grid, "l0-grid")}, **opts)
@@ -83,7 +83,7 @@ def cmd_calm(args):
             assumed_values=dict(model.assumed),
         )
         if not args.no_time_domain:
-            summary[vname]["time_domain"] = _time_domain(model, vname, args, out)
+            summary[vname]["time_domain"] = run_time_domain(model, vname, args, out)
     write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     for vname, s in summary.items():
         print(
@@ -102,7 +102,7 @@ def cmd_calm(args):
 def add_parser(sub):
     c = sub.add_parser("calm", help="reproduce the without-waves stability study (thesis 6.1)")
     c.add_argument("--out", default="results", help="output folder (default: results)")
-    _tow_option(c, multiple=True, default=("barge2a", "barge2b"))
+    tow_option(c, multiple=True, default=("barge2a", "barge2b"))
     c.add_argument(
         "--xp-grid",
         nargs=3,
@@ -128,6 +128,6 @@ def add_parser(sub):
         action="store_true",
         help="skip the runs from the thesis's initial condition (figs 6.5-6.7)",
     )
-    _time_domain_options(c)
-    _common(c)
+    time_domain_options(c)
+    model_options(c)
     c.set_defaults(func=cmd_calm)

@@ -8,7 +8,7 @@ from pathlib import Path
 import jaxtow as jt
 
 from ..io._atomic import write_file
-from ._common import _tow_names, _tow_option, positive_int
+from ._common import positive_int, tow_names, tow_option
 from .tow import load_tow
 
 
@@ -18,7 +18,7 @@ def _waterline(args):
 
     if args.waterline:
         return jt.io.read_waterline(args.waterline, draft=args.draft or 5.0)
-    name = _tow_names(args, "drift")[0]
+    name = tow_names(args, "drift")[0]
     tow = load_tow(name, "drift")
     if args.draft is None:
         return tow.waterline
@@ -72,7 +72,7 @@ def cmd_drift(args):
 
 def add_parser(sub):
     d = sub.add_parser("drift", help="compare the waterline drift methods (thesis chapters 4-5)")
-    _tow_option(d, default=("barge1",))
+    tow_option(d, default=("barge1",))
     d.add_argument(
         "--waterline", help="half-waterline text file instead (see jaxtow.io.read_waterline)"
     )

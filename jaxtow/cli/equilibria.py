@@ -8,11 +8,11 @@ import numpy as np
 
 import jaxtow as jt
 
-from ._common import _common, _model, _parse_sets, _tow_option
+from ._common import model_options, parse_sets, tow_model, tow_option
 
 
 def cmd_equilibria(args):
-    model, _ = _model(args, overrides=_parse_sets(args.set))
+    model, _ = tow_model(args, overrides=parse_sets(args.set))
     eqs = jt.equilibria(model)
     st = jt.stability(model, eqs.state)
     print(
@@ -37,7 +37,7 @@ def cmd_equilibria(args):
 
 def add_parser(sub):
     e = sub.add_parser("equilibria", help="equilibria of one configuration and their stability")
-    _tow_option(e)
+    tow_option(e)
     e.add_argument("--eigenvalues", action="store_true", help="print all eigenvalues")
-    _common(e)
+    model_options(e)
     e.set_defaults(func=cmd_equilibria)

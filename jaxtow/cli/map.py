@@ -7,13 +7,13 @@ from pathlib import Path
 
 import jaxtow as jt
 
-from ._common import _common, _model, _parse_sets, _tow_option, grid_option, positive_int
+from ._common import grid_option, model_options, parse_sets, positive_int, tow_model, tow_option
 
 
 def cmd_map(args):
     if not args.param:
         raise SystemExit("error: give at least one --param NAME LO HI N")
-    model, tow_name = _model(args, overrides=_parse_sets(args.set))
+    model, tow_name = tow_model(args, overrides=parse_sets(args.set))
     grid = {}
     for name, lo, hi, n in args.param:
         grid[name] = grid_option((lo, hi, n), f"param {name}")
@@ -63,7 +63,7 @@ def cmd_map(args):
 
 def add_parser(sub):
     m = sub.add_parser("map", help="sweep any parameters; NetCDF + figure")
-    _tow_option(m)
+    tow_option(m)
     m.add_argument(
         "--param",
         nargs=4,
@@ -89,5 +89,5 @@ def add_parser(sub):
         "--chunk-size", type=positive_int, default=16384, help="points per vmapped chunk"
     )
     m.add_argument("--quiet", action="store_true", help="no progress bar")
-    _common(m)
+    model_options(m)
     m.set_defaults(func=cmd_map)
