@@ -19,7 +19,7 @@ import dataclasses
 import functools
 import math
 import os
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Mapping, Sequence
 
 import equinox as eqx
 import jax
@@ -189,7 +189,7 @@ class SweepExecution:
     of one per model structure)."""
 
     chunk_size: int = 16384
-    devices: tuple | None = None
+    devices: Sequence | None = None
     kernel: Callable | None = None
     specialise: bool = False
 

@@ -6,7 +6,6 @@ temporary working folder. A block that needs an optional extra says so in its fi
 from __future__ import annotations
 
 import importlib.util
-import os
 import re
 from pathlib import Path
 
@@ -51,4 +50,3 @@ def test_every_python_block_runs(page, tmp_path, monkeypatch):
             exec(compile(code, f"{page.name} block {i + 1}", "exec"), namespace)
         except Exception as e:  # the page and block in the failure, then the error
             raise AssertionError(f"{page.name}, Python block {i + 1} fails: {e!r}\n{code}") from e
-    assert os.getcwd() == str(tmp_path)

@@ -89,19 +89,19 @@ def _imports(name: str, path: Path) -> list[tuple[str, int, bool]]:
     return found
 
 
-def _graph() -> tuple[dict[str, set[str]], dict]:
+def _graph() -> dict[str, set[str]]:
+    """module -> the package modules it imports (a name imported from a module counts as
+    an import of that module)."""
     mods = _modules()
     edges: dict[str, set[str]] = {m: set() for m in mods}
-    where: dict = {}
     for m, path in mods.items():
-        for target, line, in_function in _imports(m, path):
+        for target, _, _ in _imports(m, path):
             t = target
             while t not in mods and "." in t:
                 t = t.rsplit(".", 1)[0]
             if t in mods and t != m:
                 edges[m].add(t)
-                where[(m, t)] = (line, in_function)
-    return edges, where
+    return edges
 
 
 def _cycles(edges: dict[str, set[str]]) -> list[list[str]]:
@@ -154,7 +154,7 @@ def test_the_graph_reader_sees_imports_inside_functions(tmp_path):
 
 
 def test_the_import_graph_is_acyclic():
-    edges, where = _graph()
+    edges = _graph()
     cycles = _cycles(edges)
     detail = [
         {m: sorted(t for t in edges[m] if t in c) for m in c} for c in cycles
@@ -165,7 +165,7 @@ def test_the_import_graph_is_acyclic():
 def test_no_module_imports_the_package_facade():
     """`jaxtow/__init__.py` re-exports the whole library; only the application (the command
     line) may import it, or every module would depend on every other one."""
-    edges, where = _graph()
+    edges = _graph()
     users = sorted(m for m in edges if "jaxtow" in edges[m] and not m.startswith("jaxtow.cli"))
     assert not users, f"modules importing the facade `jaxtow`: {users}"
 

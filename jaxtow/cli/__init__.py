@@ -178,6 +178,8 @@ def _lock_output(out):
         raise SystemExit(f"error: --out {out} is a file; give a folder for the outputs")
     try:
         path.mkdir(parents=True, exist_ok=True)
+        # an explicit probe: how a lock library treats a folder it cannot write to varies
+        # (a soft-lock fallback, say), and the run would fail only at its first file
         probe = path / ".jaxtow.write-test"
         probe.touch()
         probe.unlink()
