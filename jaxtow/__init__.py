@@ -89,9 +89,11 @@ if TYPE_CHECKING:
         FINITE as FINITE,
         NONNEGATIVE as NONNEGATIVE,
         POSITIVE as POSITIVE,
+        ParameterStatus as ParameterStatus,
         Rule as Rule,
         at_least as at_least,
         in_range as in_range,
+        parameter_status as parameter_status,
         rule_field as rule_field,
     )
     from ._simulate import (
@@ -138,6 +140,8 @@ __all__ = [
     "NONNEGATIVE",
     "POSITIVE",
     "Rule",
+    "ParameterStatus",
+    "parameter_status",
     "at_least",
     "in_range",
     "rule_field",

@@ -24,7 +24,7 @@ import jax
 import jax.numpy as jnp
 from jaxtyping import Array, Float
 
-from ._rules import POSITIVE, Checked, in_range, is_concrete, rule_field
+from ._rules import POSITIVE, Checked, guard, in_range, is_concrete, rule_field
 from ._towline import AbstractTowline
 from ._units import Scales
 from ._vessel import Vessel
@@ -140,8 +140,9 @@ class ForceBreakdown(eqx.Module):
         return self.manoeuvring + self.towline + self.coupling + self.external
 
 
-def force_breakdown(t, y, model: TowModel) -> ForceBreakdown:
-    """The `ForceBreakdown` of the vessel at time t and state y."""
+def force_breakdown(t, y, model: TowModel, *, throw: bool = True) -> ForceBreakdown:
+    """The `ForceBreakdown` of the vessel at time t and state y. ``throw``: check the
+    model's parameters (see `vector_field`)."""
     u, v, r, l, gamma, psi = (y[i] for i in range(6))
     ves = model.vessel
     T = model.towline.tension(l)
@@ -149,7 +150,7 @@ def force_breakdown(t, y, model: TowModel) -> ForceBreakdown:
     xp, yp = model.towline.xp, model.towline.yp
     towline = jnp.stack([T * jnp.cos(a), -T * jnp.sin(a), -T * (xp * jnp.sin(a) + yp * jnp.cos(a))])
     coupling = jnp.stack([(ves.m + ves.a22) * v * r, -(ves.m + ves.a11) * u * r, jnp.zeros_like(r)])
-    return ForceBreakdown(
+    out = ForceBreakdown(
         manoeuvring=ves.manoeuvring_forces(u, v, r),
         towline=towline,
         coupling=coupling,
@@ -157,9 +158,10 @@ def force_breakdown(t, y, model: TowModel) -> ForceBreakdown:
         inertia=ves.inertia(),
         tension=T,
     )
+    return guard(out, model.checks()) if throw else out
 
 
-def validity(model: TowModel, y) -> dict:
+def validity(model: TowModel, y, *, throw: bool = True) -> dict:
     """The physics' validity limits at state y, as named flags (True = valid) and the numbers
     behind them: ``line_taut`` (the towline carries tension; a slack line is outside the
     equilibrium theory of the tow), ``moving_ahead`` (u' > 0: the hull moves bow first
@@ -170,7 +172,7 @@ def validity(model: TowModel, y) -> dict:
     y = jnp.asarray(y)
     out = {"line_taut": model.towline.tension(y[3]) > 0, "moving_ahead": y[0] > 0}
     out.update(model.external.validity(y))
-    return out
+    return guard(out, model.checks()) if throw else out
 
 
 def all_valid(flags: dict):
@@ -197,19 +199,34 @@ def kinematics(y, xp, yp=0.0) -> Float[Array, "3"]:
     return jnp.stack([ldot, gdot, r])
 
 
-def vector_field(t, y: Float[Array, "6"], model: TowModel) -> Float[Array, "6"]:
+def vector_field(
+    t, y: Float[Array, "6"], model: TowModel, *, throw: bool = True
+) -> Float[Array, "6"]:
     """dy/dt' of the tow, thesis eqs 6.1-6.6; signature f(t, y, args) as in diffrax.
-    ``y`` is the state (u', v', r', l', γ, ψ): shape (6,)."""
+    ``y`` is the state (u', v', r', l', γ, ψ): shape (6,).
+
+    ``throw=True`` (default): the model's parameters are checked, eagerly with a
+    `ValueError`, and under `jax.jit`/`jax.vmap` with `equinox.error_if`, whose message
+    names the parameter (under a plain `jax.jit` it stands below XLA's "CpuCallback error"
+    line; `equinox.filter_jit` shows it first). ``throw=False``: no check, no host callback
+    in the program; read `jaxtow.parameter_status` (a result code) instead. jaxtow's own
+    compiled programs pass ``throw=False``: they check their models before running."""
     y = jnp.asarray(y)
     if y.shape != (6,):
         raise ValueError(
             f"y must be the state (u', v', r', l', gamma, psi) of shape (6,), got shape "
             f"{y.shape} (vmap the vector field over a batch of states)"
         )
-    fb = force_breakdown(t, y, model)
-    return jnp.concatenate(
+    fb = force_breakdown(t, y, model, throw=False)
+    out = jnp.concatenate(
         [fb.total / fb.inertia, kinematics(y, model.towline.xp, model.towline.yp)]
     )
+    return guard(out, model.checks()) if throw else out
+
+
+def unchecked_vector_field(t, y, model: TowModel):
+    """`vector_field` with ``throw=False``, as a diffrax term's f(t, y, args)."""
+    return vector_field(t, y, model, throw=False)
 
 
 def sway_offset(y, xp, yp=0.0):

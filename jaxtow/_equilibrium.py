@@ -34,7 +34,7 @@ from jaxtyping import Array, Bool, Float, Int
 
 from ._dynamics import TowModel, force_breakdown, vector_field
 from ._roots import bisect, brackets, polish
-from ._rules import check_now, guard, is_concrete
+from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._towline import Towline
 from .forces._base import NoExternalForce
 
@@ -114,16 +114,22 @@ def _steady(model: TowModel) -> TowModel:
 def hull_forces_at_heading(psi, model: TowModel):
     """Non-towline forces (X', Y', N') on the vessel moving with the tug at heading ψ (r = 0:
     the external force's `steady` form)."""
-    fb = force_breakdown(0.0, equilibrium_kinematics(psi), _steady(model))
+    fb = force_breakdown(0.0, equilibrium_kinematics(psi), _steady(model), throw=False)
     return fb.manoeuvring + fb.coupling + fb.external
 
 
-def heading_residual(psi, model: TowModel):
+def heading_residual(psi, model: TowModel, *, throw: bool = True):
     """F(ψ) = N(ψ) − x_p' Y(ψ) (docs/model.md section 4; thesis eqs 6.17-6.23), + y_p' X(ψ) for
     a transverse attachment offset (the towline moment −T'(x_p' sin a + y_p' cos a) with
-    T' sin a = Y, T' cos a = −X; see `jaxtow.vector_field` (docs/model.md section 2))."""
+    T' sin a = Y, T' cos a = −X; see `jaxtow.vector_field` (docs/model.md section 2)).
+    ``throw``: check the model's parameters (see `jaxtow.vector_field`)."""
     X, Y, N = hull_forces_at_heading(psi, model)
-    return N - model.towline.xp * Y + model.towline.yp * X
+    out = N - model.towline.xp * Y + model.towline.yp * X
+    return guard(out, model.checks()) if throw else out
+
+
+def _residual(psi, model: TowModel):
+    return heading_residual(psi, model, throw=False)
 
 
 def _state_from_heading(psi, model: TowModel):
@@ -145,7 +151,9 @@ def _state_from_heading(psi, model: TowModel):
 def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
     state, gamma, T, length = jax.vmap(_state_from_heading, in_axes=(0, None))(psi, model)
     steady = _steady(model)  # the states have r = 0
-    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady))))(state)
+    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady, throw=False))))(
+        state
+    )
     branch = jnp.where(jnp.abs(psi) <= STRAIGHT_TOL, 0, jnp.sign(psi)).astype(jnp.int32)
     return Equilibria(
         state=state,
@@ -174,7 +182,7 @@ def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, max_steps: int):
     """Root of F on [lo, hi] (where F takes the values ``f_lo``, ``f_hi``) to machine
     precision: bisection, then a two-step Newton polish (`jaxtow._roots`)."""
     psi, ok = bisect(
-        lambda p, m: heading_residual(p, m),
+        _residual,
         lo,
         hi,
         model,
@@ -183,7 +191,7 @@ def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, max_steps: int):
         f_lo=f_lo,
         f_hi=f_hi,
     )
-    psi = polish(lambda p, m: heading_residual(p, m), psi, model, steps=2, lower=lo, upper=hi)
+    psi = polish(_residual, psi, model, steps=2, lower=lo, upper=hi)
     return jnp.where(exact, lo, psi), ok | exact
 
 
@@ -193,10 +201,10 @@ def _scan_residual(grid, model: TowModel):
     compile) the force model a second time."""
     n = grid.shape[0]
     if n <= SCAN_BATCH:
-        return jax.vmap(lambda p: heading_residual(p, model))(grid)
+        return jax.vmap(_residual, in_axes=(0, None))(grid, model)
     pad = -n % SCAN_BATCH
     padded = jnp.concatenate([grid, jnp.full((pad,), grid[-1], grid.dtype)])
-    F = jax.lax.map(lambda p: heading_residual(p, model), padded, batch_size=SCAN_BATCH)
+    F = jax.lax.map(lambda p: _residual(p, model), padded, batch_size=SCAN_BATCH)
     return F[:n]
 
 
@@ -207,7 +215,7 @@ def equilibria_fixed(
     max_roots: int = 8,
     psi_range: float = math.pi / 2,
     max_steps: int = 128,
-    check: bool = True,
+    throw: bool = True,
 ) -> Equilibria:
     """All equilibria in |ψ| <= psi_range, as a fixed-size, jittable, vmappable set.
 
@@ -215,9 +223,10 @@ def equilibria_fixed(
     each sign change is refined. At most ``max_roots`` roots are kept (``found`` marks
     them; padding slots repeat the first root so that Jacobians stay finite);
     ``n_roots`` counts the sign changes seen (more than ``max_roots`` means roots were
-    dropped). With ``check=True`` invalid parameters raise
-    at run time (also under jit/vmap) with a message naming them; sweeps, which validate
-    their grids beforehand, pass ``check=False``.
+    dropped). With ``throw=True`` invalid parameters raise
+    at run time (also under jit/vmap) with a message naming them (see `jaxtow.vector_field`);
+    sweeps, which validate their grids beforehand, pass ``throw=False``, as may a user under
+    a plain `jax.jit` who reads `jaxtow.parameter_status` instead.
     """
     if n_grid < 3 or n_grid % 2 == 0:
         raise ValueError(f"parameter 'n_grid' must be an odd integer >= 3, got {n_grid}")
@@ -234,7 +243,7 @@ def equilibria_fixed(
         grid[idx], grid[idx + 1], F[idx], F[idx + 1], exact, model, max_steps
     )
     eqs = _finish(psi, found, ok & (count > 0), model, count)
-    return guard(eqs, model.checks()) if check else eqs
+    return guard(eqs, model.checks()) if throw else eqs
 
 
 def equilibria(
@@ -249,9 +258,8 @@ def equilibria(
     # the compiled call checks only what check_now could not see (a traced model, when
     # called under a user's jit): a program with run-time checks holds host callbacks,
     # which JAX's persistent compilation cache never stores
-    traced = not all(is_concrete(x) for x in jax.tree_util.tree_leaves(model))
     eqs = _equilibria_jit(
-        model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range, check=traced
+        model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range, throw=holds_tracers(model)
     )
     if int(eqs.n_roots) > max_roots:  # refuse a silently truncated result
         raise ValueError(
@@ -262,11 +270,11 @@ def equilibria(
 
 _equilibria_jit = jax.jit(
     equilibria_fixed,
-    static_argnames=("n_grid", "max_roots", "psi_range", "max_steps", "check"),
+    static_argnames=("n_grid", "max_roots", "psi_range", "max_steps", "throw"),
 )
 
 
-def analytic_equilibria(model: TowModel, *, check: bool = True) -> Equilibria:
+def analytic_equilibria(model: TowModel, *, throw: bool = True) -> Equilibria:
     """Closed-form equilibria, thesis eqs 6.7-6.13 (docs/model.md section 3).
 
     Valid for the calm-water model (no external force) with an elastic towline. Three
@@ -292,7 +300,9 @@ def analytic_equilibria(model: TowModel, *, check: bool = True) -> Equilibria:
     length = (T / EA + 1.0) * l0  # eq. 6.13
     state = jnp.stack([u, v, 0 * u, length, gamma, psi], axis=-1)
     steady = _steady(model)  # the states have r = 0
-    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady))))(state)
+    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady, throw=False))))(
+        state
+    )
     found = jnp.stack([side, jnp.asarray(True), side])
     branch = jnp.array([-1, 0, 1], dtype=jnp.int32)
     eqs = Equilibria(
@@ -310,4 +320,4 @@ def analytic_equilibria(model: TowModel, *, check: bool = True) -> Equilibria:
         residual=residual,
         n_roots=jnp.sum(found).astype(jnp.int32),
     )
-    return guard(eqs, model.checks()) if check else eqs
+    return guard(eqs, model.checks()) if throw else eqs

@@ -30,14 +30,22 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 import equinox as eqx
+import jax
 import jax.numpy as jnp
 import numpy as np
 from jax.core import Tracer
+from jaxtyping import Array, Bool, Int
 
 
 def is_concrete(x) -> bool:
     """True if ``x`` holds concrete values (not a JAX tracer)."""
     return not isinstance(x, Tracer)
+
+
+def holds_tracers(tree) -> bool:
+    """True if any leaf of ``tree`` is a tracer (a model traced by the caller's own jit or
+    vmap: only a run-time check sees its values)."""
+    return not all(is_concrete(x) for x in jax.tree_util.tree_leaves(tree))
 
 
 @dataclasses.dataclass(eq=False)
@@ -208,3 +216,52 @@ def guard(tree, checks):
         else:
             tree = eqx.error_if(tree, pred, msg)
     return tree
+
+
+class ParameterStatus(eqx.Module):
+    """The result code of a model's parameter checks (`parameter_status`): ``code`` 0 when
+    every rule holds, else 1 + the index of the first failing check in ``messages`` (the
+    sentences of `Checked.checks`, in order). Jittable and vmappable (``code`` then has the
+    batch shape); read it with ``ok`` and, eagerly, `message` or `raise_if_invalid`."""
+
+    code: Int[Array, "..."]
+    messages: tuple[str, ...] = eqx.field(static=True)
+
+    @property
+    def ok(self) -> Bool[Array, "..."]:
+        """True where every parameter is valid."""
+        return self.code == 0
+
+    def message(self) -> str | None:
+        """Eager: the sentence of the first failing check (of the first failing member of a
+        batch), None when all hold."""
+        codes = np.ravel(np.asarray(self.code))
+        bad = codes[codes > 0]
+        return self.messages[int(bad[0]) - 1] if bad.size else None
+
+    def raise_if_invalid(self) -> None:
+        """Eager: a `ValueError` with `message` if any check fails."""
+        msg = self.message()
+        if msg is not None:
+            raise ValueError(msg)
+
+
+def parameter_status(model: Checked) -> ParameterStatus:
+    """The result code of every parameter check of ``model`` (and of every module inside it),
+    without a host callback: the way to see the checks from inside a plain `jax.jit`, where
+    an `equinox.error_if` message stands below XLA's "CpuCallback error" line. Call the
+    numerical functions with ``throw=False`` and return this beside their outputs::
+
+        @jax.jit
+        def run(model):
+            return jaxtow.equilibria_fixed(model, throw=False), jaxtow.parameter_status(model)
+
+        eqs, status = run(model)
+        status.raise_if_invalid()  # "parameter 'EA' must be > 0 and finite"
+    """
+    checks = model.checks()
+    if not checks:
+        return ParameterStatus(code=jnp.asarray(0, jnp.int32), messages=())
+    bad = jnp.stack([jnp.asarray(p, bool) for p, _ in checks])
+    code = jnp.where(jnp.any(bad), jnp.argmax(bad) + 1, 0).astype(jnp.int32)
+    return ParameterStatus(code=code, messages=tuple(m for _, m in checks))

@@ -24,9 +24,9 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
-from ._dynamics import TowModel, all_valid, validity, vector_field
+from ._dynamics import TowModel, all_valid, unchecked_vector_field, validity
 from ._parameters import check_values, with_parameters
-from ._rules import check_now
+from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._stability import eigenvalues
 from ._sweep import without_metadata
 
@@ -120,7 +120,7 @@ def integrate(
     Differentiable in forward mode (`jax.jvp`/`jax.jacfwd`: the limit-cycle shooting);
     reverse mode through the adaptive loop is not supported.
     """
-    term = diffrax.ODETerm(vector_field)
+    term = diffrax.ODETerm(unchecked_vector_field)
     controller = diffrax.PIDController(rtol=rtol, atol=atol)
     solver_ = _solver(solver)
     if isinstance(solver_, diffrax.AbstractImplicitSolver):  # as diffeqsolve: the step's tolerances
@@ -218,7 +218,7 @@ def integrate(
 def _run(model, y0, ts, *, solver: str, rtol: float, atol: float, max_steps: int):
     sol = integrate(model, y0, ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps)
     ok = sol.result == diffrax.RESULTS.successful
-    flags = jax.vmap(lambda y: validity(model, y))(sol.ys)
+    flags = jax.vmap(lambda y: validity(model, y, throw=False))(sol.ys)
     flags["physics_valid"] = jax.vmap(all_valid)(flags)
     return Simulation(
         ts=sol.ts, ys=sol.ys, success=ok, result=sol.result, n_steps=sol.n_steps, validity=flags
@@ -249,24 +249,38 @@ def simulate(
     rtol: float = 1e-8,
     atol: float = 1e-8,
     max_steps: int = 200_000,
+    throw: bool = True,
 ) -> Simulation:
     """Integrate the tow from state ``y0`` over [t0, t1] (non-dimensional time, by L/U_tug).
 
     Returns a `Simulation`; ``success`` is False (never an exception, never a silent
-    result) when the solver stops early, e.g. because ``max_steps`` ran out.
+    result) when the solver stops early, e.g. because ``max_steps`` ran out. The model's
+    parameters are checked before the run; a model traced by the caller's own `jax.jit` or
+    `jax.vmap` is checked in the program with ``throw=True`` (see `jaxtow.vector_field`).
     """
+    if is_concrete(y0):  # numpy: also under the caller's jit, where jnp would stage it
+        y0v = np.asarray(y0, dtype=float)
+        if y0v.shape != (6,) or not np.all(np.isfinite(y0v)):
+            raise ValueError(f"parameter 'y0' must be a finite state of shape (6,), got {y0v}")
+        if y0v[3] <= 0:
+            raise ValueError("parameter 'y0' must have a positive towline length l'")
+    elif jnp.shape(y0) != (6,):
+        raise ValueError(f"parameter 'y0' must be a state of shape (6,), got {jnp.shape(y0)}")
     y0 = jnp.asarray(y0, dtype=float)
-    if y0.shape != (6,) or not bool(jnp.all(jnp.isfinite(y0))):
-        raise ValueError(f"parameter 'y0' must be a finite state of shape (6,), got {y0}")
-    if float(y0[3]) <= 0:
-        raise ValueError("parameter 'y0' must have a positive towline length l'")
     ts = _save_grid(t0, t1, n_save)
     check_now(model)
     if solver == "auto":
+        if holds_tracers(model):
+            raise ValueError(
+                "parameter 'solver': 'auto' chooses the solver from the model's values, which "
+                "a model traced by jax.jit or jax.vmap does not have; pass solver='tsit5' "
+                "(non-stiff) or 'kvaerno5' (stiff towlines)"
+            )
         solver = choose_solver(model, y0, t1, t0)
-    return _run_jit(  # models differing only in metadata share the program (Barge 2a and 2b)
+    sim = _run_jit(  # models differing only in metadata share the program (Barge 2a and 2b)
         without_metadata(model), y0, ts, solver=solver, rtol=rtol, atol=atol, max_steps=max_steps
     )
+    return guard(sim, model.checks()) if throw and holds_tracers(model) else sim
 
 
 def simulate_batch(
@@ -282,6 +296,7 @@ def simulate_batch(
     atol: float = 1e-8,
     max_steps: int = 200_000,
     batch_size: int | None = 64,
+    throw: bool = True,
 ) -> Simulation:
     """Many runs in one compiled call: initial states ``y0s`` (B, 6) and, optionally,
     per-run model parameters ``params`` {name: (B,) values} (see `jaxtow.with_parameters`).
@@ -302,7 +317,7 @@ def simulate_batch(
         check_values(model, k, np.asarray(v))
     ts = _save_grid(t0, t1, n_save)
     check_now(model)
-    return _batch_jit(
+    sims = _batch_jit(
         without_metadata(model),
         y0s,
         params,
@@ -313,6 +328,7 @@ def simulate_batch(
         max_steps=max_steps,
         batch_size=batch_size,
     )
+    return guard(sims, model.checks()) if throw and holds_tracers(model) else sims
 
 
 def _batch(model, y0s, params, ts, *, solver, rtol, atol, max_steps, batch_size):

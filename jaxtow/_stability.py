@@ -14,7 +14,7 @@ import jax
 import jax.numpy as jnp
 from jaxtyping import Array, Bool, Complex, Float, Int
 
-from ._dynamics import TowModel, vector_field
+from ._dynamics import TowModel, unchecked_vector_field
 from ._rules import guard
 
 STABLE, MARGINAL, UNSTABLE, INVALID = -1, 0, 1, 2
@@ -30,9 +30,13 @@ STABILITY_LABELS = {
 STABILITY_TOL = 1e-9
 
 
-def jacobian(model: TowModel, y: Float[Array, "6"], t=0.0) -> Float[Array, "6 6"]:
-    """A = ∂f/∂y of the tow vector field at state y (forward-mode autodiff)."""
-    return jax.jacfwd(vector_field, argnums=1)(t, jnp.asarray(y), model)
+def jacobian(
+    model: TowModel, y: Float[Array, "6"], t=0.0, *, throw: bool = True
+) -> Float[Array, "6 6"]:
+    """A = ∂f/∂y of the tow vector field at state y (forward-mode autodiff). ``throw``:
+    check the model's parameters (see `jaxtow.vector_field`)."""
+    A = jax.jacfwd(unchecked_vector_field, argnums=1)(t, jnp.asarray(y), model)
+    return guard(A, model.checks()) if throw else A
 
 
 EIG_METHODS = ("lapack", "polynomial")
@@ -41,7 +45,7 @@ ABSCISSA_METHODS = (*EIG_METHODS, "routh")
 
 
 def eigenvalues(
-    model: TowModel, y: Float[Array, "6"], method: str = "lapack"
+    model: TowModel, y: Float[Array, "6"], method: str = "lapack", *, throw: bool = True
 ) -> Complex[Array, "6"]:
     """Eigenvalues of the Jacobian at y (non-dimensional, per L/U_tug).
 
@@ -49,9 +53,11 @@ def eigenvalues(
     GPU). ``method="polynomial"``: roots of the characteristic polynomial by Aberth-Ehrlich
     iteration, pure JAX arithmetic with no library call (agrees with LAPACK to ~1e-9 on the
     tow Jacobians; slower than LAPACK on CPU). When only max Re λ is wanted,
-    `spectral_abscissa` is faster than both.
+    `spectral_abscissa` is faster than both. ``throw``: check the model's parameters (see
+    `jaxtow.vector_field`).
     """
-    return guard(matrix_eigenvalues(jacobian(model, y), method), model.checks())
+    lam = matrix_eigenvalues(jacobian(model, y, throw=False), method)
+    return guard(lam, model.checks()) if throw else lam
 
 
 def matrix_eigenvalues(A: Float[Array, "n n"], method: str = "lapack") -> Complex[Array, " n"]:
@@ -75,11 +81,12 @@ def matrix_max_real_eigenvalue(A: Float[Array, "n n"], method: str = "lapack") -
 
 
 def max_real_eigenvalue(
-    model: TowModel, y: Float[Array, "6"], method: str = "lapack"
+    model: TowModel, y: Float[Array, "6"], method: str = "lapack", *, throw: bool = True
 ) -> Float[Array, ""]:
     """max Re λ(∂f/∂y) at y: < 0 stable, > 0 unstable (thesis figs 2.6b, 6.4); ``method``:
-    see `matrix_max_real_eigenvalue`."""
-    return guard(matrix_max_real_eigenvalue(jacobian(model, y), method), model.checks())
+    see `matrix_max_real_eigenvalue`; ``throw``: see `jaxtow.vector_field`."""
+    mr = matrix_max_real_eigenvalue(jacobian(model, y, throw=False), method)
+    return guard(mr, model.checks()) if throw else mr
 
 
 #: Bisection steps of `spectral_abscissa`: the bracket [−R, R] (R a bound on |λ|) shrinks
@@ -274,9 +281,12 @@ def routh_first_column(coeffs: Float[Array, " n+1"]) -> Float[Array, " n+1"]:
     return jnp.stack(first)
 
 
-def routh_hurwitz_stable(model: TowModel, y: Float[Array, "6"]) -> Bool[Array, ""]:
+def routh_hurwitz_stable(
+    model: TowModel, y: Float[Array, "6"], *, throw: bool = True
+) -> Bool[Array, ""]:
     """Routh-Hurwitz criterion: all roots in the open left half-plane (binary answer)."""
-    return matrix_routh_hurwitz_stable(jacobian(model, y))
+    ok = matrix_routh_hurwitz_stable(jacobian(model, y, throw=False))
+    return guard(ok, model.checks()) if throw else ok
 
 
 def matrix_routh_hurwitz_stable(A: Float[Array, "n n"]) -> Bool[Array, ""]:
@@ -302,9 +312,14 @@ class StabilityResult(eqx.Module):
     routh_hurwitz: Bool[Array, " k"]
 
 
-def stability(model: TowModel, states: Float[Array, "k 6"]) -> StabilityResult:
-    """Eigenvalues, max Re λ, classification and Routh-Hurwitz verdict for each state."""
-    lam = jax.vmap(eigenvalues, in_axes=(None, 0))(model, states)
+def stability(
+    model: TowModel, states: Float[Array, "k 6"], *, throw: bool = True
+) -> StabilityResult:
+    """Eigenvalues, max Re λ, classification and Routh-Hurwitz verdict for each state;
+    ``throw``: see `jaxtow.vector_field`."""
+    J = jax.vmap(lambda y: jacobian(model, y, throw=False))(jnp.asarray(states))
+    lam = jax.vmap(matrix_eigenvalues)(J)
     mr = jnp.max(jnp.real(lam), axis=-1)
-    rh = jax.vmap(routh_hurwitz_stable, in_axes=(None, 0))(model, states)
-    return StabilityResult(eigenvalues=lam, max_real=mr, stability=classify(mr), routh_hurwitz=rh)
+    rh = jax.vmap(matrix_routh_hurwitz_stable)(J)
+    out = StabilityResult(eigenvalues=lam, max_real=mr, stability=classify(mr), routh_hurwitz=rh)
+    return guard(out, model.checks()) if throw else out

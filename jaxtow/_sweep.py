@@ -79,14 +79,14 @@ def point_kernel(
     """
     mdl = with_parameters(model, **params)
     if method == "analytic":
-        eqs = analytic_equilibria(mdl, check=False)
+        eqs = analytic_equilibria(mdl, throw=False)
     elif method == "numerical":
         eqs = equilibria_fixed(
-            mdl, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range, check=False
+            mdl, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range, throw=False
         )
     else:
         raise ValueError(f"parameter 'method' must be 'numerical' or 'analytic', got {method!r}")
-    J = jax.vmap(jacobian, in_axes=(None, 0))(mdl, eqs.state)  # once, for both verdicts
+    J = jax.vmap(lambda y: jacobian(mdl, y, throw=False))(eqs.state)  # once, for both verdicts
     out = {f: getattr(eqs, f) for f in SLOT_FIELDS}
     if eig_method == "routh":
         max_re = jax.vmap(spectral_abscissa)(J)

@@ -65,7 +65,7 @@ def straight_equilibrium(model: TowModel, psi0=0.0, *, rtol: float = 1e-12, max_
     straight behind). Returns (state (6,), ψ, converged). Differentiable in the model by
     the implicit function theorem (optimistix's implicit adjoint)."""
     psi, ok = newton(
-        lambda p, m: heading_residual(p, m),
+        lambda p, m: heading_residual(p, m, throw=False),
         jnp.asarray(psi0, float),
         model,
         rtol=rtol,

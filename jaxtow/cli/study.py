@@ -4,6 +4,7 @@ self-contained HTML report."""
 from __future__ import annotations
 
 import json
+import re
 import sys
 from pathlib import Path
 
@@ -12,6 +13,12 @@ import jaxtow as jt
 from ..io._atomic import write_file
 from ._common import positive_float
 from .tow import load_tow
+
+
+def safe_name(text: str) -> str:
+    """``text`` as a portable file-name part: letters, digits, '.', '-' and '_' kept, every
+    other run of characters (a '/', spaces, brackets) one '_'."""
+    return re.sub(r"[^A-Za-z0-9._-]+", "_", text).strip("_") or "_"
 
 
 def cmd_study(args):
@@ -28,24 +35,56 @@ def cmd_study(args):
         kw["t1"] = args.t1
     if args.no_time_domain:
         kw["time_domain"] = False
-    try:
-        study = jt.studies.tow_study(tow, progress=not args.quiet, **kw)
-    except ValueError as e:
-        raise SystemExit(f"jaxtow study: error: {e}") from None
-    if not args.quiet:
+    stem = safe_name(tow.name)
+    options = dict(kw, n_save=2001)
+    store = jt.io.StepStore(
+        out / f".{stem}_steps",
+        jt.io.study_fingerprint(tow.resolved, options, jt.__version__),
+        resume=args.resume,
+    )
+    study = jt.studies.tow_study(tow, progress=not args.quiet, store=store, **kw)
+    report = _write(study, out, stem, quiet=args.quiet)
+    _print_summary(study.summary, report, out)
+    stopped = study.summary.get("incomplete")
+    if stopped is None:
+        store.clear()
+        return
+    print(
+        f"jaxtow study: the study stopped at the step '{stopped['step']}' ({stopped['error']}); "
+        f"the report of what finished, marked incomplete, is {report}; the finished steps are "
+        f"kept in {store.folder}: run the same command with --resume to continue",
+        file=sys.stderr,
+    )
+    if stopped["interrupted"]:
+        raise KeyboardInterrupt
+    raise SystemExit(1)
+
+
+def _write(study, out: Path, stem: str, *, quiet: bool) -> Path:
+    """The study's NetCDF, PNG, JSON and HTML files; a figure that fails is named in the
+    summary (``figure_errors``) and the report is written without it."""
+    if not quiet:
         print("[report] figures and files ...", file=sys.stderr)
     for name, ds in study.datasets.items():
-        jt.io.save_dataset(ds, out / f"{tow.name}_{name}.nc")
-    figs = {
-        k: jt.plotting.tow.png_bytes(f) for k, f in jt.plotting.tow.study_figures(study).items()
-    }
+        jt.io.save_dataset(ds, out / f"{stem}_{safe_name(name)}.nc")
+    figs, errors = {}, {}
+    for k, make in jt.plotting.tow.study_figure_makers(study).items():
+        try:
+            figs[k] = jt.plotting.tow.png_bytes(make())
+        except Exception as e:  # noqa: BLE001 - one figure never costs the report
+            errors[k] = f"{type(e).__name__}: {e}"
+    if errors:
+        study.summary["figure_errors"] = errors
     for k, b in figs.items():
-        write_file(out / f"{tow.name}_{k}.png", b)
-    write_file(out / f"{tow.name}_summary.json", json.dumps(study.summary, indent=2, default=float))
-    report = out / f"{tow.name}_report.html"
+        write_file(out / f"{stem}_{safe_name(k)}.png", b)
+    write_file(out / f"{stem}_summary.json", json.dumps(study.summary, indent=2, default=float))
+    report = out / f"{stem}_report.html"
     write_file(report, jt.reports.tow_report_html(study.summary, figs, version=jt.__version__))
-    s = study.summary
-    print(f"{tow.name}: {s.get('description', '')}")
+    return report
+
+
+def _print_summary(s: dict, report: Path, out: Path) -> None:
+    print(f"{s['tow']}: {s.get('description', '')}")
     if "calm" in s:
         print(f"  calm water: {s['calm']['verdict_text']}")
     for name, r in s.get("sea_states", {}).items():
@@ -58,6 +97,8 @@ def cmd_study(args):
         )
     for k, why in s.get("skipped", {}).items():
         print(f"  not assessed: {k} ({why})")
+    for k, why in s.get("figure_errors", {}).items():
+        print(f"  figure {k} failed: {why}")
     print(f"wrote {report} (and NetCDF, JSON, PNG) to {out}")
 
 
@@ -85,4 +126,10 @@ def add_parser(sub):
     p.add_argument("--t1", type=positive_float, default=None, help="override [study] t1")
     p.add_argument("--no-time-domain", action="store_true", help="skip the time-domain check")
     p.add_argument("--quiet", action="store_true", help="no progress output")
+    p.add_argument(
+        "--resume",
+        action="store_true",
+        help="continue a study that failed or was interrupted, from the steps it finished "
+        "(kept in OUT/.TOW_steps until the study completes)",
+    )
     p.set_defaults(func=cmd_study)

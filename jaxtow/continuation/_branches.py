@@ -71,13 +71,13 @@ class _EquilibriumProblem:
         self.model, self.set = model, _setter(parameter)
 
         def G(x):
-            return heading_residual(x[0], self.set(model, x[1]))
+            return heading_residual(x[0], self.set(model, x[1]), throw=False)
 
         def state(x):
             return _state_from_heading(x[0], self.set(model, x[1]))[0]
 
         def jac(x):
-            return jacobian(self.set(model, x[1]), state(x))
+            return jacobian(self.set(model, x[1]), state(x), throw=False)
 
         self.G, self.curve = G, _Curve(G)
         self.state = jax.jit(state)
@@ -92,7 +92,7 @@ class _EquilibriumProblem:
 
 def first_lyapunov_coefficient(model: TowModel, y, omega=None):
     """First Lyapunov coefficient l₁ at a Hopf point y of the tow (see `lyapunov_coefficient`)."""
-    return lyapunov_coefficient(lambda x: vector_field(0.0, x, model), y, omega)
+    return lyapunov_coefficient(lambda x: vector_field(0.0, x, model, throw=False), y, omega)
 
 
 def lyapunov_coefficient(f: Callable, y, omega=None):

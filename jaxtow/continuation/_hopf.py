@@ -39,7 +39,7 @@ def hopf_curve(
 
     def G(x):
         m = s2(s1(model, x[0]), x[1])
-        return hopf_test(jacobian(m, _state_from_heading(jnp.asarray(0.0), m)[0]))
+        return hopf_test(jacobian(m, _state_from_heading(jnp.asarray(0.0), m)[0], throw=False))
 
     x0 = np.asarray(start, float)
     # Δ₅ carries the stiff towline modes (values ~1e11): scale it by its gradient at the start
@@ -71,7 +71,7 @@ def straight_behind_hopf(model: TowModel, parameter, bracket, *, set_model=None)
 
     def h(p):
         m = s(model, p)
-        return hopf_test(jacobian(m, _state_from_heading(jnp.asarray(0.0), m)[0]))
+        return hopf_test(jacobian(m, _state_from_heading(jnp.asarray(0.0), m)[0], throw=False))
 
     lo, hi = (float(v) for v in bracket)
     if np.sign(float(h(lo))) == np.sign(float(h(hi))):

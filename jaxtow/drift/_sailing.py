@@ -8,6 +8,7 @@ import jax
 import jax.numpy as jnp
 from jaxtyping import Array, ArrayLike, Float
 
+from .._rules import guard, is_concrete
 from .._units import G
 from ..waves._irregular import mean_drift
 from ._damping import aranha, damping_matrix, encounter_frequency, yaw_rate_damping
@@ -35,6 +36,7 @@ def sailing_drift(
     form: str = "aranha",
     yaw_rate: bool = True,
     g: float = G,
+    throw: bool = True,
 ) -> Float[Array, "3"]:
     """Mean drift (Fx, Fy, Nz) per ζa² of a vessel moving with (u, v, r) [m/s, m/s, rad/s] in
     regular waves of absolute frequency ω0 from β.
@@ -50,8 +52,14 @@ def sailing_drift(
       ω ∂F/∂ω term of B is that shift); kept to reproduce the thesis.
 
     ``yaw_rate=False`` drops the yaw-rate column (it is zero anyway when the table has no
-    sectional moments). Overtaken waves (ω_e ≤ 0) lie outside the model: the QTF is zero at
-    ω ≤ 0, so the drift there is zero; `sailing_validity` flags it.
+    sectional moments).
+
+    Overtaken waves (encounter frequency ω_e ≤ 0: following seas the vessel outruns) lie
+    outside the forward-speed theory (τ = ω0 U/g ≥ 1 there, far beyond its small-τ range),
+    which gives no drift (the QTF is zero at ω ≤ 0). ``throw=True`` (default) refuses them:
+    a `ValueError` eagerly, `equinox.error_if` when traced, naming ω_e; ``throw=False``
+    accepts the zero drift, as the tow model and the resistance budget do, which carry their
+    own flags (``encounter_positive``, ``overtaken_energy``; `sailing_validity`).
     """
     check_form(form)
     u, v, r = (jnp.asarray(x, float) for x in (u, v, r))
@@ -61,12 +69,27 @@ def sailing_drift(
         B = damping_matrix(q, we, beta, g=g)
         if not yaw_rate:
             B = B.at[:, 2].set(0.0)
-        return q(we, beta) + B @ jnp.stack([u, v, r])
-    col_r = yaw_rate_damping(q, omega0, beta, g=g) if yaw_rate else jnp.zeros(3)
-    if form == "linear":
-        B = damping_matrix(q, omega0, beta, g=g)
-        return q(omega0, beta) + B[:, :2] @ jnp.stack([u, v]) + col_r * r
-    return aranha(q, omega0, beta, u, v, g=g) + col_r * r
+        F = q(we, beta) + B @ jnp.stack([u, v, r])
+    else:
+        col_r = yaw_rate_damping(q, omega0, beta, g=g) if yaw_rate else jnp.zeros(3)
+        if form == "linear":
+            B = damping_matrix(q, omega0, beta, g=g)
+            F = q(omega0, beta) + B[:, :2] @ jnp.stack([u, v]) + col_r * r
+        else:
+            F = aranha(q, omega0, beta, u, v, g=g) + col_r * r
+    if not throw:
+        return F
+    we = encounter_frequency(omega0, beta, u, v, g=g)
+    return guard(F, [(we <= 0, _overtaken_message(we, "omega_e"))])
+
+
+def _overtaken_message(x, what: str) -> str:
+    value = f" ({what} = {float(x):.4g})" if is_concrete(x) else ""
+    return (
+        f"the vessel overtakes the waves{value}: the encounter frequency is <= 0, outside the "
+        "forward-speed drift theory (see jaxtow.drift.sailing_validity); pass throw=False to "
+        "take the drift there as zero"
+    )
 
 
 def irregular_sailing_drift(
@@ -81,12 +104,24 @@ def irregular_sailing_drift(
     form: str = "aranha",
     yaw_rate: bool = True,
     g: float = G,
+    throw: bool = True,
 ) -> Float[Array, "3"]:
     """Mean drift in an irregular sea with forward speed: 2 ∫ S(ω0) F_sail(ω0) dω0
     (eq. 2.29 with `sailing_drift` of the given ``form``), per unit of the spectrum's scale.
-    ``omega`` is the absolute wave-frequency grid of the spectrum ``S`` (see `jaxtow.waves`)."""
+    ``omega`` is the absolute wave-frequency grid of the spectrum ``S`` (see `jaxtow.waves`).
+
+    ``throw=True`` refuses a sea the vessel partly outruns: a frequency carrying more than
+    0.1 % of the peak spectral density with encounter frequency ≤ 0 (see `sailing_drift`;
+    the error gives the share of m0 overtaken). ``throw=False`` counts no drift there."""
     check_form(form)
-    F = jax.vmap(lambda w: sailing_drift(q, w, beta, u, v, r, form=form, yaw_rate=yaw_rate, g=g))(
-        jnp.asarray(omega)
-    )
-    return mean_drift(omega, S, F)
+    omega, S = jnp.asarray(omega), jnp.asarray(S)
+    F = jax.vmap(
+        lambda w: sailing_drift(q, w, beta, u, v, r, form=form, yaw_rate=yaw_rate, g=g, throw=False)
+    )(omega)
+    out = mean_drift(omega, S, F)
+    if not throw:
+        return out
+    over = encounter_frequency(omega, beta, u, v, g=g) <= 0
+    significant = jnp.any(over & (S > 1e-3 * jnp.max(S)))
+    share = jnp.sum(jnp.where(over, S, 0.0)) / jnp.maximum(jnp.sum(S), 1e-300)
+    return guard(out, [(significant, _overtaken_message(share, "share of the sea's m0"))])

@@ -65,7 +65,15 @@ class WaveDriftForce(AbstractExternalForce):
         U, L = self.scales.u_tug, self.scales.length
         u, v, r, psi = y[0] * U, y[1] * U, y[2] * U / L, y[5]
         F = sailing_drift(
-            self.qtf, self.omega, -psi, u, v, r, form=self.form, yaw_rate=self.yaw_rate
+            self.qtf,
+            self.omega,
+            -psi,
+            u,
+            v,
+            r,
+            form=self.form,
+            yaw_rate=self.yaw_rate,
+            throw=False,
         )
         return self.zeta_a**2 * F
 
@@ -113,13 +121,14 @@ class IrregularWaveDriftForce(AbstractExternalForce):
         return irregular_sailing_drift(
             self.qtf,
             self.omega,
-            self.spectrum(self.omega),
+            self.spectrum.density(self.omega),
             -y[5],
             y[0] * U,
             y[1] * U,
             y[2] * U / L,
             form=self.form,
             yaw_rate=self.yaw_rate,
+            throw=False,
         )
 
     def __call__(self, t, y: Float[Array, "6"], model) -> Float[Array, "3"]:
@@ -138,7 +147,7 @@ class IrregularWaveDriftForce(AbstractExternalForce):
         out.update(separation_ratio=sep, no_separation=sep < 1.0)
         u, v = y[0] * sc.u_tug, y[1] * sc.u_tug
         peak = sailing_validity(wp, -y[5], u, v)
-        S = self.spectrum(self.omega)
+        S = self.spectrum.density(self.omega)
         overtaken = encounter_frequency(self.omega, -y[5], u, v) <= 0
         m0 = spectral_integral(self.omega, S, jnp.ones_like(S))
         out.update(
@@ -259,7 +268,7 @@ class SlowDriftForce(AbstractExternalForce):
 
     def amplitudes(self):
         """a_i = √(2 S(ω_i) Δω_i) [m]."""
-        return jnp.sqrt(2.0 * self.spectrum(self.omega) * self.domega)
+        return jnp.sqrt(2.0 * self.spectrum.density(self.omega) * self.domega)
 
     def dimensional(self, t, y):
         """(Fx [N], Fy [N], Nz [N·m]) at non-dimensional time t and state y."""
@@ -268,7 +277,7 @@ class SlowDriftForce(AbstractExternalForce):
         u, v, r, psi = y[0] * U, y[1] * U, y[2] * U / L, y[5]
         T = jax.vmap(
             lambda w: sailing_drift(
-                self.qtf, w, -psi, u, v, r, form=self.form, yaw_rate=self.yaw_rate
+                self.qtf, w, -psi, u, v, r, form=self.form, yaw_rate=self.yaw_rate, throw=False
             )
         )(self.omega)  # (n, 3)
         we = self.omega + self.omega**2 * U / G

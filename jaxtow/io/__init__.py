@@ -1,7 +1,8 @@
 """File formats and labelled results, one module a format: `dataset` (sweep results as
 NetCDF), `qtf_files` (jaxtow's QTF files and `read_qtf`, any drift file by its content),
 `wamit`, `capytaine`, `resistance` (coefficient tables, resistance budgets), `design`,
-`drift_methods`, `waterline`, `checkpoint` (a sweep's chunks). Numerical modules never
+`drift_methods`, `waterline`, `checkpoint` (a sweep's chunks), `study_steps` (a study's
+finished steps). Numerical modules never
 import this."""
 
 from typing import TYPE_CHECKING
@@ -30,6 +31,7 @@ if TYPE_CHECKING:
         read_coefficient_table as read_coefficient_table,
         resistance_dataset as resistance_dataset,
     )
+    from .study_steps import StepStore as StepStore, study_fingerprint as study_fingerprint
     from .wamit import (
         read_drift_file as read_drift_file,
         read_wamit_drift as read_wamit_drift,
@@ -41,6 +43,8 @@ if TYPE_CHECKING:
 
 __all__ = [
     "Checkpoint",
+    "StepStore",
+    "study_fingerprint",
     "read_waterline",
     "write_waterline",
     "load_dataset",

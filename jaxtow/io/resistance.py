@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from ..resistance._budget import COMPONENTS, Budget
+from ..resistance._budget import COMPONENTS, OVERTAKEN_TOL, Budget
 from ..resistance._flow import CoefficientTable
 
 
@@ -14,7 +14,9 @@ def resistance_dataset(
 ) -> xr.Dataset:
     """Dataset over (speed, tp, component) from a `jaxtow.resistance.resistance_grid` budget:
     ``resistance`` [N] per component along the course, ``total`` [N], ``share`` [%],
-    ``froude`` and the body-axis loads ``fx``, ``fy`` [N], ``nz`` [N m]. The tow's
+    ``froude``, ``overtaken_energy`` and its flag ``waves_complete`` (following seas the tow
+    outruns: the drift theory gives no wave resistance there) and the body-axis loads
+    ``fx``, ``fy`` [N], ``nz`` [N m]. The tow's
     assumptions (illustrative tables, estimates) go into the attributes."""
     speeds, tps = np.asarray(speeds, float), np.asarray(tps, float)
     r = np.asarray(budget.resistance)
@@ -34,6 +36,19 @@ def resistance_dataset(
             ("speed",),
             np.asarray(budget.froude)[:, 0] < 0.15,
             {"long_name": "Fn < 0.15"},
+        ),
+        "overtaken_energy": (
+            dims[:2],
+            np.asarray(budget.overtaken_energy),
+            {
+                "long_name": "share of the sea's m0 the tow overtakes (encounter frequency <= 0: "
+                "outside the drift theory, no wave resistance counted there)",
+            },
+        ),
+        "waves_complete": (
+            dims[:2],
+            np.asarray(budget.overtaken_energy) <= OVERTAKEN_TOL,
+            {"long_name": f"overtaken_energy <= {OVERTAKEN_TOL}: the wave resistance is complete"},
         ),
     }
     for i, (c, u) in enumerate((("fx", "N"), ("fy", "N"), ("nz", "N m"))):

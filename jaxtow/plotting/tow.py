@@ -15,13 +15,30 @@ from .timedomain import plot_time_traces
 
 def study_figures(study) -> dict:
     """name → matplotlib Figure for a `jaxtow.studies.TowStudy` (the report's order)."""
-    s, figs = study.summary, {}
-    w, fx = study.drift_curves["head_sea_fx"]
+    return {k: make() for k, make in study_figure_makers(study).items()}
+
+
+def study_figure_makers(study) -> dict:
+    """name → a function drawing that figure, for the parts the study finished (an
+    incomplete study has fewer); the command line draws them one by one, so a figure that
+    fails costs only itself."""
+    s, makers = study.summary, {}
+    if "head_sea_fx" in study.drift_curves:
+        makers["drift"] = lambda: _drift_figure(s, *study.drift_curves["head_sea_fx"])
+    for name, b in study.budgets.items():
+        makers[f"operating_point_{name}"] = lambda name=name, b=b: _operating_point(s, name, b)
+    if "map_xp_l0" in study.datasets:
+        makers["map"] = lambda: _map_figure(s, study.datasets["map_xp_l0"])
+    if "calm" in study.runs:
+        makers["time_domain"] = lambda: _time_domain_figure(s, *study.runs["calm"])
+    return makers
+
+
+def _drift_figure(s: dict, w, fx):
     fig, ax = plt.subplots(figsize=(6.5, 4))
     ax.plot(w, np.asarray(fx) / 1e3, color="tab:blue", label="F_x / zeta_a^2, head seas")
-    B = s["breadth"]
     ax.axhline(
-        -0.5 * 1025.0 * 9.80665 * B / 1e3,
+        -0.5 * 1025.0 * 9.80665 * s["breadth"] / 1e3,
         color="0.5",
         ls="--",
         lw=1,
@@ -32,46 +49,47 @@ def study_figures(study) -> dict:
     ax.set_title(f"{s['tow']}: {s['drift_source'][:90]}", fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    figs["drift"] = fig
-    for name, b in study.budgets.items():
-        row = next(r for r in s["resistance"] if r["sea_state"] == name)
-        pt = (row["operating_speed"], row["pull"]) if "operating_speed" in row else None
-        ax = plot_operating_point(
-            b["speeds"],
-            b["pull"],
-            {"total": b["total"]},
-            pt,
-            title=f"{s['tow']}: sea state {name} (Hs {row['hs']:g} m, Tp {row['tp']:g} s)",
-        )
-        figs[f"operating_point_{name}"] = ax.figure
-    if "map_xp_l0" in study.datasets:
-        ax = plot_stability_map(
-            study.datasets["map_xp_l0"],
-            "xp",
-            "l0",
-            title=f"{s['tow']}: straight-behind max Re(lambda), calm water",
-        )
-        t = s["towline"]
-        ax.plot(
-            [t["xp"]],
-            [t["l0"]],
-            marker="*",
-            ms=14,
-            color="gold",
-            mec="k",
-            label="design point",
-            ls="none",
-        )
-        ax.legend(fontsize=8, loc="upper right")
-        figs["map"] = ax.figure
-    if "calm" in study.runs:
-        traj, met = study.runs["calm"]
-        figs["time_domain"] = plot_time_traces(
-            traj,
-            f"{s['tow']}: calm water from psi0 = {s['time_domain']['psi0_deg']:g} deg, "
-            f"y0' = {s['time_domain']['y0']:g} ({met['outcome']})",
-        )
-    return figs
+    return fig
+
+
+def _operating_point(s: dict, name: str, b: dict):
+    row = next(r for r in s["resistance"] if r["sea_state"] == name)
+    pt = (row["operating_speed"], row["pull"]) if "operating_speed" in row else None
+    ax = plot_operating_point(
+        b["speeds"],
+        b["pull"],
+        {"total": b["total"]},
+        pt,
+        title=f"{s['tow']}: sea state {name} (Hs {row['hs']:g} m, Tp {row['tp']:g} s)",
+    )
+    return ax.figure
+
+
+def _map_figure(s: dict, ds):
+    ax = plot_stability_map(
+        ds, "xp", "l0", title=f"{s['tow']}: straight-behind max Re(lambda), calm water"
+    )
+    t = s["towline"]
+    ax.plot(
+        [t["xp"]],
+        [t["l0"]],
+        marker="*",
+        ms=14,
+        color="gold",
+        mec="k",
+        label="design point",
+        ls="none",
+    )
+    ax.legend(fontsize=8, loc="upper right")
+    return ax.figure
+
+
+def _time_domain_figure(s: dict, traj, met):
+    return plot_time_traces(
+        traj,
+        f"{s['tow']}: calm water from psi0 = {s['time_domain']['psi0_deg']:g} deg, "
+        f"y0' = {s['time_domain']['y0']:g} ({met['outcome']})",
+    )
 
 
 def png_bytes(fig) -> bytes:

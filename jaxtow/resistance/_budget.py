@@ -28,6 +28,11 @@ from ._tug import Tug
 COMPONENTS = ("current", "wind", "waves", "tug")
 
 
+#: Largest share of the sea's m0 the tow may overtake (encounter frequency <= 0) before the
+#: wave resistance is flagged incomplete (``overtaken_energy``; 0.1 %).
+OVERTAKEN_TOL = 1e-3
+
+
 class WaveDrift(eqx.Module):
     """Mean wave drift in a JONSWAP sea with forward speed, (F_x, F_y, N) [N, N, N·m].
 
@@ -85,7 +90,9 @@ class WaveDrift(eqx.Module):
     def __call__(self, hs, tp, gamma, beta, u, v):
         S = self.spectrum(hs, tp, gamma)
         if self.qtf is not None:
-            return irregular_sailing_drift(self.qtf, self.omega, S, beta, u, v, 0.0, form=self.form)
+            return irregular_sailing_drift(
+                self.qtf, self.omega, S, beta, u, v, 0.0, form=self.form, throw=False
+            )
         return method_mean_drift(
             self.method, self.waterline, self.omega, S, beta, u, v, **dict(self.options)
         )

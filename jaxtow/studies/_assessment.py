@@ -58,25 +58,37 @@ STRAIGHT_DEG = 1.0
 
 
 class Steps:
-    """Progress of the study's steps on stderr: ``[k/n] label ... done in t s``."""
+    """The study's steps: progress on stderr (``[k/n] label ... done in t s``), and, with a
+    ``store`` (`jaxtow.io.StepStore`), each step's result stored as it finishes and a stored
+    step read back instead of run (``[k/n] label: resumed``). ``current`` is the label of the
+    step running (the one named when a study stops early)."""
 
-    def __init__(self, total: int, enabled: bool = True, stream=None):
+    def __init__(self, total: int, enabled: bool = True, stream=None, store=None):
         self.total, self.enabled, self.k = total, enabled, 0
         self.stream = stream or sys.stderr
+        self.store = store
         self.times: dict = {}
+        self.current = ""
 
-    def run(self, label: str, fn, *args, **kw):
+    def _say(self, text: str) -> None:
+        if self.enabled:
+            self.stream.write(f"[{self.k}/{self.total}] {text}\n")
+            self.stream.flush()
+
+    def run(self, key: str, label: str, fn, *args, **kw):
+        """Step ``key`` (its name in the store), shown as ``label``: ``fn(*args, **kw)``."""
         self.k += 1
+        self.current = label
+        if self.store is not None and (out := self.store.get(key)) is not None:
+            self._say(f"{label}: resumed")
+            return out
         t0 = time.perf_counter()
-        if self.enabled:
-            self.stream.write(f"[{self.k}/{self.total}] {label} ...\n")
-            self.stream.flush()
+        self._say(f"{label} ...")
         out = fn(*args, **kw)
-        dt = time.perf_counter() - t0
-        self.times[label] = dt
-        if self.enabled:
-            self.stream.write(f"[{self.k}/{self.total}] {label}: done in {dt:.1f} s\n")
-            self.stream.flush()
+        self.times[label] = time.perf_counter() - t0
+        if self.store is not None:
+            self.store.put(key, out)
+        self._say(f"{label}: done in {self.times[label]:.1f} s")
         return out
 
 
@@ -215,11 +227,18 @@ def tow_study(
     t1: float | None = None,
     n_save: int = 2001,
     speeds=None,
+    store=None,
 ) -> TowStudy:
     """Run the whole assessment of ``tow`` (a `jaxtow.tow.Tow`). The grids, the run length
     and the speeds default to the tow file's ``[study]``; the keywords override them (the
     tests use small grids). Steps the tow cannot take (no manoeuvring model, no tug, no
-    sea state) are listed in ``summary['skipped']`` with the reason."""
+    sea state) are listed in ``summary['skipped']`` with the reason.
+
+    Nothing finished is lost: a step that fails, or a Ctrl-C, ends the study there and what
+    finished is returned, with ``summary['incomplete']`` = {``step``: the step's label,
+    ``error``: what went wrong, ``interrupted``: True for a Ctrl-C}. With ``store`` (a
+    `jaxtow.io.StepStore`) each step's result is stored as it finishes and a stored step is
+    read back instead of run, so a killed study resumes with the same results."""
     opts = dict(tow.study)
     map_xp = _linspace(opts["map_xp"] if map_xp is None else map_xp)
     map_l0 = _linspace(opts["map_l0"] if map_l0 is None else map_l0)
@@ -232,43 +251,71 @@ def tow_study(
     n_steps = 1 + (
         has_model * (2 + bool(tow.tug) + (len(seas) if opts["sea_states"] else 0) + bool(do_td))
     )
-    steps = Steps(n_steps, enabled=progress)
-    q, desc = steps.run("wave drift of the hull", tow.drift)
-    summary = _particulars(tow, desc)
-    summary.update(_hull_drift(tow, q, seas, res))
-    skipped: dict = {}
-    if not has_model:
-        skipped["stability, resistance and time domain"] = (
-            "the tow file has no manoeuvring model ([vessel] derivatives or preset, and [towline])"
+    steps = Steps(n_steps, enabled=progress, store=store)
+    res.summary = summary = _particulars(tow)
+    summary["skipped"] = {}
+    try:
+        _drift_step(tow, seas, steps, res)
+        if not has_model:
+            summary["skipped"]["stability, resistance and time domain"] = (
+                "the tow file has no manoeuvring model ([vessel] derivatives or preset, and "
+                "[towline])"
+            )
+        else:
+            _model_steps(tow, seas, speeds, steps, res, progress=progress)
+            _map(tow.model(), map_xp, map_l0, progress, steps, res)
+            if do_td:
+                _time_domain(tow.model(), opts, t1, n_save, steps, res)
+            else:
+                summary["skipped"]["time domain"] = "switched off in [study]"
+    except Exception as e:  # noqa: BLE001 - the study keeps what finished and names the failure
+        summary["incomplete"] = dict(
+            step=steps.current, error=f"{type(e).__name__}: {e}", interrupted=False
         )
-        summary["skipped"] = skipped
-        res.summary = summary
-        return res
-    model = tow.model()
+    except KeyboardInterrupt:
+        summary["incomplete"] = dict(
+            step=steps.current, error="interrupted (Ctrl-C)", interrupted=True
+        )
+    summary["step_times_s"] = steps.times
+    return res
+
+
+def _drift_step(tow, seas, steps: Steps, res: TowStudy) -> None:
+    """The hull's drift source and its mean drift (`_hull_drift`)."""
+
+    def drift():
+        q, desc = tow.drift()
+        return desc, *_hull_drift(tow, q, seas)
+
+    desc, record, curves = steps.run("drift", "wave drift of the hull", drift)
+    res.summary["drift_source"] = desc
+    res.summary.update(record)
+    res.drift_curves.update(curves)
+
+
+def _model_steps(tow, seas, speeds, steps: Steps, res: TowStudy, *, progress: bool) -> None:
+    """Resistance, and the equilibria in calm water and in each sea state."""
+    summary, model = res.summary, tow.model()
     summary["stability_coefficient_c"] = float(model.vessel.stability_coefficient())
     summary["towline"] = _towline_record(model, tow)
     if tow.tug is not None:
         summary.update(_resistance(tow, seas, speeds, steps, res))
     else:
-        skipped["resistance"] = "the tow file has no [tug]"
-    summary["calm"] = steps.run("equilibria and stability in calm water", _equilibria_record, model)
-    if opts["sea_states"]:
-        summary["sea_states"] = {s.name: _sea_state_record(tow, s, steps) for s in seas}
+        summary["skipped"]["resistance"] = "the tow file has no [tug]"
+    summary["calm"] = steps.run(
+        "calm", "equilibria and stability in calm water", _equilibria_record, model
+    )
+    if tow.study["sea_states"]:
+        summary["sea_states"] = {}
+        for s in seas:
+            summary["sea_states"][s.name] = _sea_state_record(tow, s, steps)
     if tow.line_info:
         summary["towline"]["strength"] = _strength_record(tow, model, summary)
-    summary["map"] = _map(model, map_xp, map_l0, progress, steps, res)
-    if do_td:
-        summary["time_domain"] = _time_domain(model, opts, t1, n_save, steps, res)
-    else:
-        skipped["time domain"] = "switched off in [study]"
-    summary["skipped"] = skipped
-    summary["step_times_s"] = steps.times
-    res.summary = summary
-    return res
 
 
-def _particulars(tow, drift_source: str) -> dict:
-    """The tow as the summary names it: its particulars, drift source, estimates, warnings."""
+def _particulars(tow) -> dict:
+    """The tow as the summary names it: its particulars, sailing form, estimates, warnings
+    (the drift source is added by the drift step)."""
     sc = tow.scales
     return dict(
         tow=tow.name,
@@ -278,19 +325,19 @@ def _particulars(tow, drift_source: str) -> dict:
         length=sc.length,
         breadth=float(tow.resolved["vessel"]["breadth"]),
         draft=sc.draft,
-        drift_source=drift_source,
+        drift_source="",
         sailing_form=tow.form,
         assumed=[list(a) for a in tow.assumed],
         warnings=list(tow.warnings),
     )
 
 
-def _hull_drift(tow, q, seas, res: TowStudy) -> dict:
+def _hull_drift(tow, q, seas) -> tuple[dict, dict]:
     """The head-sea surge drift of the hull against the short-wave wall limit, and the
-    mean drift in each sea state at rest and at the design speed (no model needed)."""
+    mean drift in each sea state at rest and at the design speed (no model needed): the
+    summary's record and the figure's curve."""
     w = np.asarray(q.omega)
     fx = np.asarray(jax.vmap(lambda x: q(x, 0.0))(jnp.asarray(w))[:, 0])
-    res.drift_curves["head_sea_fx"] = (w, fx)
     # Faltinsen's short-wave limit of head-sea surge drift on a wall-sided bow: ½ρgB
     wall = 0.5 * RHO_SEA * G * float(tow.resolved["vessel"]["breadth"])
     rows = []
@@ -303,10 +350,11 @@ def _hull_drift(tow, q, seas, res: TowStudy) -> dict:
             F = irregular_sailing_drift(q, DEFAULT_OMEGA, S, 0.0, u, 0.0, form=tow.form)
             row[f"fx_{tag}"] = float(F[0])
         rows.append(row)
-    return {
+    record = {
         "head_sea_surge_at_highest_omega_over_wall_limit": float(-fx[-1] / wall),
         "mean_drift": rows,
     }
+    return record, {"head_sea_fx": (w, fx)}
 
 
 def _towline_record(model, tow) -> dict:
@@ -330,18 +378,21 @@ def _resistance(tow, seas, speeds, steps: Steps, res: TowStudy) -> dict:
 
     def budget():
         rows = [evaluate(tr, tow.tug, s, 0.0, tow.route_length) for s in seas]
+        budgets = {}
         for s in seas:
             b = resistance.resistance_grid(tr, s, jnp.asarray(speeds), jnp.array([float(s.tp)]))
-            res.budgets[s.name] = dict(
+            budgets[s.name] = dict(
                 speeds=speeds,
                 components=np.asarray(b.resistance[:, 0]),
                 total=np.asarray(b.total[:, 0]),
                 pull=np.asarray(tow.tug.pull(jnp.asarray(speeds))),
             )
-        return rows
+        return rows, budgets
 
+    rows, budgets = steps.run("resistance", "resistance, bollard pull and operating speed", budget)
+    res.budgets.update(budgets)
     return dict(
-        resistance=steps.run("resistance, bollard pull and operating speed", budget),
+        resistance=rows,
         components=list(resistance.COMPONENTS),
         tug=dict(
             bollard_pull=float(tow.tug.bollard_pull),
@@ -354,7 +405,9 @@ def _resistance(tow, seas, speeds, steps: Steps, res: TowStudy) -> dict:
 
 def _sea_state_record(tow, s, steps: Steps) -> dict:
     rec = steps.run(
-        f"equilibria and stability in sea state {s.name!r}", _equilibria_record, tow.sea_model(s)
+        f"sea state {s.name}",
+        f"equilibria and stability in sea state {s.name!r}",
+        lambda: _equilibria_record(tow.sea_model(s)),
     )
     notes = []
     if any(float(a) != 0.0 for a in (s.wave_angle, s.wind_angle)):
@@ -366,25 +419,25 @@ def _sea_state_record(tow, s, steps: Steps) -> dict:
     return rec
 
 
-def _map(model, map_xp, map_l0, progress: bool, steps: Steps, res: TowStudy) -> dict:
+def _map(model, map_xp, map_l0, progress: bool, steps: Steps, res: TowStudy) -> None:
     """The calm-water stability map around the design point, and the share of it where the
     straight-behind equilibrium is stable."""
 
     def stability_map():
         return sweep(model, {"xp": map_xp, "l0": map_l0}, progress=progress)
 
-    ds = steps.run("stability map around the design point (x_p', l0')", stability_map)
+    ds = steps.run("map", "stability map around the design point (x_p', l0')", stability_map)
     res.datasets["map_xp_l0"] = ds
     straight = ds["max_real"].where(ds["valid"] & (ds["branch"] == 0)).max("equilibrium")
     stable = (straight < 0).values
-    return dict(
+    res.summary["map"] = dict(
         xp=[float(map_xp[0]), float(map_xp[-1]), int(map_xp.size)],
         l0=[float(map_l0[0]), float(map_l0[-1]), int(map_l0.size)],
         straight_stable_share=float(np.mean(stable)),
     )
 
 
-def _time_domain(model, opts: dict, t1: float, n_save: int, steps: Steps, res: TowStudy) -> dict:
+def _time_domain(model, opts: dict, t1: float, n_save: int, steps: Steps, res: TowStudy) -> None:
     """The calm-water run from the [study]'s disturbed start, and its fishtailing metrics."""
 
     def run():
@@ -394,9 +447,9 @@ def _time_domain(model, opts: dict, t1: float, n_save: int, steps: Steps, res: T
         flags = {k: bool(np.all(np.asarray(v))) for k, v in sim.validity.items()}
         return trajectory(model, sim), met, flags
 
-    traj, met, flags = steps.run("time-domain check from a disturbed start", run)
+    traj, met, flags = steps.run("time domain", "time-domain check from a disturbed start", run)
     res.runs["calm"] = (traj, met)
-    return dict(
+    res.summary["time_domain"] = dict(
         psi0_deg=opts["psi0_deg"],
         y0=opts["y0"],
         t1=t1,

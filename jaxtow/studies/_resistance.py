@@ -14,6 +14,7 @@ import numpy as np
 
 from .. import resistance
 from ..io import resistance_dataset
+from ..resistance._budget import OVERTAKEN_TOL
 from ..waves import physical_tp_range
 
 
@@ -58,7 +59,7 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
             operating_resistance=dict(zip(resistance.COMPONENTS, map(float, p.budget.resistance))),
             overtaken_energy=float(p.budget.overtaken_energy),
         )
-        if float(p.budget.overtaken_energy) > 1e-3:
+        if float(p.budget.overtaken_energy) > OVERTAKEN_TOL:
             out["message"] = str(msg) + (
                 f" WARNING: the tow overtakes {100 * float(p.budget.overtaken_energy):.1f} % "
                 "of the sea's wave energy (encounter frequency <= 0), where no drift is "

@@ -127,15 +127,22 @@ class AbstractSpectrum(Checked):
     Its fields are checked by their rules: eagerly at construction, and under tracing by
     the ``checks()`` of the model that holds it (`jaxtow.equilibria`, `jaxtow.eigenvalues`
     and the other entry points guard them; a sweep or `jaxtow.simulate` checks its values
-    before it runs). Evaluating the spectrum adds no check of its own: a run-time check
-    inside a compiled program is a host callback, and JAX's persistent cache never stores
-    such a program."""
+    before it runs). Called by a user, ``spectrum(omega)`` checks its own fields (eagerly, or
+    with `equinox.error_if` when traced; ``throw=False``: no check, see
+    `jaxtow.parameter_status`). jaxtow's compiled programs evaluate `density`, which adds no
+    check: a run-time check inside a compiled program is a host callback, and JAX's
+    persistent cache never stores such a program."""
 
     hs: eqx.AbstractVar[Float[Array, ""]]
     tp: eqx.AbstractVar[Float[Array, ""]]
 
     @abc.abstractmethod
-    def __call__(self, omega) -> Float[Array, "..."]: ...
+    def density(self, omega) -> Float[Array, "..."]:
+        """S(ω) [m²s/rad], without a parameter check."""
+
+    def __call__(self, omega, *, throw: bool = True) -> Float[Array, "..."]:
+        S = self.density(omega)
+        return guard(S, self.checks()) if throw else S
 
     @property
     def omega_peak(self):
@@ -156,7 +163,7 @@ class Jonswap(AbstractSpectrum):
     sigma_b: Float[Array, ""] = rule_field(rule=POSITIVE, default=0.09)
     normalise: bool = eqx.field(static=True, default=False)
 
-    def __call__(self, omega):
+    def density(self, omega):
         return _jonswap(
             omega, self.hs, self.tp, self.gamma, self.sigma_a, self.sigma_b, self.normalise
         )
@@ -168,7 +175,7 @@ class PiersonMoskowitz(AbstractSpectrum):
     hs: Float[Array, ""] = rule_field(rule=POSITIVE)
     tp: Float[Array, ""] = rule_field(rule=POSITIVE)
 
-    def __call__(self, omega):
+    def density(self, omega):
         return _pierson_moskowitz(omega, self.hs, self.tp)
 
 
