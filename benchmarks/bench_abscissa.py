@@ -33,7 +33,7 @@ def jacobians(side: int, ea_factor: float) -> np.ndarray:
 
         def at(xp, l0, m=m, ea=ea):
             mdl = with_parameters(m, xp=xp, l0=l0, EA=ea)
-            eqs = analytic_equilibria(mdl, check=False)
+            eqs = analytic_equilibria(mdl, throw=False)
             return jax.vmap(jt.jacobian, in_axes=(None, 0))(mdl, eqs.state)
 
         xp, l0 = np.meshgrid(np.linspace(0.0, 0.6, side), np.linspace(0.2, 2.5, side))

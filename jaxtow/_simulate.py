@@ -14,6 +14,7 @@ towline has a stretch mode of |λ| ~ √(EA'/(l0'(m'+a11'))), e.g. 52 at EA' = 3
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import diffrax
@@ -238,6 +239,34 @@ def _save_grid(t0, t1, n_save):
     return jnp.linspace(t0, t1, n_save)
 
 
+#: The step-size controller's default tolerances in float64.
+DEFAULT_TOL = 1e-8
+
+
+def solver_tolerances(rtol: float | None, atol: float | None) -> tuple[float, float]:
+    """The step-size controller's (rtol, atol): None gives `DEFAULT_TOL` in float64 and
+    1e-5 in float32 (``JAXTOW_ENABLE_X64=0``), where 1e-8 lies below the resolution (eps
+    1.2e-7) and the controller shrinks the steps a hundredfold to chase it. A tolerance
+    below 10 eps of the dtype is refused, naming it."""
+    eps = float(jnp.finfo(jnp.result_type(float)).eps)
+    default = 1e-5 if eps > 1e-10 else DEFAULT_TOL
+    out = []
+    for name, tol in (("rtol", rtol), ("atol", atol)):
+        tol = default if tol is None else float(tol)
+        if not (math.isfinite(tol) and tol >= 10 * eps):
+            raise ValueError(
+                f"parameter {name!r} must be finite and >= 10 eps of the float type "
+                f"({10 * eps:.2g}), got {tol:g}"
+                + (
+                    " (float32: JAXTOW_ENABLE_X64=0; use >= 1e-6, or float64)"
+                    if eps > 1e-10
+                    else ""
+                )
+            )
+        out.append(tol)
+    return out[0], out[1]
+
+
 def simulate(
     model: TowModel,
     y0,
@@ -246,8 +275,8 @@ def simulate(
     t0: float = 0.0,
     n_save: int = 2001,
     solver: str = "auto",
-    rtol: float = 1e-8,
-    atol: float = 1e-8,
+    rtol: float | None = None,
+    atol: float | None = None,
     max_steps: int = 200_000,
     throw: bool = True,
 ) -> Simulation:
@@ -268,6 +297,7 @@ def simulate(
         raise ValueError(f"parameter 'y0' must be a state of shape (6,), got {jnp.shape(y0)}")
     y0 = jnp.asarray(y0, dtype=float)
     ts = _save_grid(t0, t1, n_save)
+    rtol, atol = solver_tolerances(rtol, atol)
     check_now(model)
     if solver == "auto":
         if holds_tracers(model):
@@ -292,8 +322,8 @@ def simulate_batch(
     t0: float = 0.0,
     n_save: int = 2001,
     solver: str = "tsit5",
-    rtol: float = 1e-8,
-    atol: float = 1e-8,
+    rtol: float | None = None,
+    atol: float | None = None,
     max_steps: int = 200_000,
     batch_size: int | None = 64,
     throw: bool = True,
@@ -316,6 +346,7 @@ def simulate_batch(
             raise ValueError(f"params[{k!r}] must have shape ({y0s.shape[0]},), got {v.shape}")
         check_values(model, k, np.asarray(v))
     ts = _save_grid(t0, t1, n_save)
+    rtol, atol = solver_tolerances(rtol, atol)
     check_now(model)
     sims = _batch_jit(
         without_metadata(model),

@@ -22,7 +22,7 @@ def _tow_jacobians(vessel, ea_factor, n, seed):
     def at(xp, l0):
         mdl = with_parameters(m, xp=xp, l0=l0, EA=ea)
         return jax.vmap(jt.jacobian, in_axes=(None, 0))(
-            mdl, analytic_equilibria(mdl, check=False).state
+            mdl, analytic_equilibria(mdl, throw=False).state
         )
 
     J = jax.jit(jax.vmap(at))(
@@ -106,7 +106,7 @@ def test_abscissa_on_wave_map():
 
     def both(l0, omega):
         mdl = with_parameters(m, **{"l0": l0, "external.omega": omega})
-        eqs = equilibria_fixed(mdl, n_grid=201, max_roots=4, check=False)
+        eqs = equilibria_fixed(mdl, n_grid=201, max_roots=4, throw=False)
         J = jax.vmap(jt.jacobian, in_axes=(None, 0))(mdl, eqs.state)
         lapack = jnp.max(jnp.real(jax.vmap(jnp.linalg.eigvals)(J)), axis=-1)
         return eqs.found, jax.vmap(jt.spectral_abscissa)(J), lapack
@@ -126,7 +126,7 @@ def test_abscissa_gradient(barge_2b):
 
     def f(xp, method):
         m = with_parameters(m0, xp=xp)
-        y = analytic_equilibria(m, check=False).state[0]
+        y = analytic_equilibria(m, throw=False).state[0]
         return jt.max_real_eigenvalue(m, y, method=method)
 
     x = jnp.asarray(0.3)

@@ -460,6 +460,26 @@ def test_no_unexplained_nan_in_a_wide_calm_sweep(model):
     assert a["nan"] == a["masked"] + a["flagged"] > 0  # empty slots exist: the audit sees them
 
 
+@pytest.mark.slow  # about a minute on 2 cores once compiled
+def test_the_full_nan_audit_finds_no_unexplained_nan():
+    """The scale audit itself: 10^6 calm points and 10^5 points in regular waves over wide
+    ranges (benchmarks/nan_audit.py, whose committed result is
+    benchmarks/data/perf/nan_audit.json), through the layered sweep, datasets and io."""
+    import importlib.util
+    from pathlib import Path
+
+    path = Path(__file__).parents[1] / "benchmarks" / "nan_audit.py"
+    spec = importlib.util.spec_from_file_location("nan_audit", path)
+    assert spec is not None and spec.loader is not None
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    results = mod.main([])
+    assert results["calm"]["points"] == 10**6 and results["waves"]["points"] > 9 * 10**4
+    for name, r in results.items():
+        assert r["unexplained"] == 0, (name, r["unexplained_variables"])
+        assert r["nan"] == r["masked"] + r["flagged"], name
+
+
 def test_a_run_writes_its_manifest(tmp_path, monkeypatch):
     """OUT/jaxtow_run.json: the command, its options, versions, the documented estimates,
     the files written and how the run ended (finished, failed with its error, interrupted)."""
@@ -571,3 +591,91 @@ def test_a_bem_config_names_the_key_that_is_not_a_number(cfg, message):
     with pytest.raises(ValueError) as e:
         build(cfg)
     assert message in str(e.value)
+
+
+# ------------------------------------------------------------------ files and shapes
+
+
+@pytest.fixture(scope="module")
+def table():
+    """A small full-circle table and its jaxtow NetCDF file's dataset."""
+    w, b = np.linspace(0.2, 2.0, 6), np.radians([-180.0, -90.0, 0.0, 90.0, 180.0])
+    fx = np.outer(w, np.cos(b) ** 2 + 1.0)
+    fy = np.outer(w, np.sin(b))
+    return jt.drift.QTF(omega=w, beta=b, fx=fx, fy=fy, nz=0.1 * fy)
+
+
+def test_a_file_that_is_not_netcdf_or_not_text_is_named(tmp_path):
+    junk = tmp_path / "junk.nc"
+    junk.write_bytes(bytes(range(256)) * 8)
+    for reader in (jt.io.load_qtf, jt.io.load_dataset):
+        with pytest.raises(ValueError, match=r"junk.nc: not a NetCDF file that xarray can read"):
+            reader(junk)
+    binary = tmp_path / "run.8"
+    binary.write_bytes(b"\x89HDF\r\n\x1a\n" + bytes(range(256)))
+    with pytest.raises(ValueError, match=r"run.8: not a text file \(a WAMIT numeric output"):
+        jt.io.read_wamit_drift(binary)
+    with pytest.raises(ValueError, match=r"run.8: not a text file"):
+        jt.io.read_qtf(binary)
+    csv = tmp_path / "t.csv"
+    csv.write_text("omega,beta,fx,fy,nz\n1,a,2,3,4\n")
+    with pytest.raises(ValueError, match=r"t.csv: not a jaxtow CSV drift table"):
+        jt.io.load_qtf(csv)
+
+
+def test_a_netcdf_table_with_a_missing_or_transposed_variable(tmp_path, table):
+    path = tmp_path / "q.nc"
+    jt.io.save_qtf(table, path)
+    ds = jt.io.load_dataset(path)
+    # transposed: read by its dimension names, the same table
+    ds.assign(fx=ds["fx"].transpose("beta", "omega")).to_netcdf(tmp_path / "t.nc")
+    back = jt.io.load_qtf(tmp_path / "t.nc")
+    np.testing.assert_array_equal(np.asarray(back.values), np.asarray(table.values))
+    ds.drop_vars("fy").to_netcdf(tmp_path / "m.nc")
+    with pytest.raises(ValueError, match=r"m.nc: no variable 'fy' \(the file holds"):
+        jt.io.load_qtf(tmp_path / "m.nc")
+    ds.assign(nz=ds["nz"].isel(beta=0)).to_netcdf(tmp_path / "d.nc")
+    with pytest.raises(ValueError, match=r"variable 'nz' has dimensions \('omega',\), expected"):
+        jt.io.load_qtf(tmp_path / "d.nc")
+
+
+def test_a_nan_in_a_wamit_file_or_a_table_is_named_as_such(tmp_path, table):
+    path = tmp_path / "q.8"
+    jt.io.write_wamit_drift(table, path)
+    lines = path.read_text().splitlines()
+    parts = lines[3].split()
+    parts[-2] = "NaN"
+    lines[3] = " ".join(parts)
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(ValueError, match=r"q.8, line 4: a non-finite number in a WAMIT record"):
+        jt.io.read_wamit_drift(path)
+    w, b = np.asarray(table.omega), np.radians([0.0, 90.0, 180.0])
+    fx = np.ones((6, 3))
+    fx[2, 1] = np.nan
+    with pytest.raises(
+        ValueError, match=r"'fx' must be finite: nan at omega = 0.92 rad/s, beta = 90"
+    ):
+        jt.drift.QTF.symmetric(omega=w, beta=b, fx=fx, fy=np.zeros((6, 3)), nz=np.zeros((6, 3)))
+
+
+def test_shapes_of_tables_and_spectra_are_named(table):
+    w = np.asarray(table.omega)
+    with pytest.raises(
+        ValueError, match=r"parameter 'fy' must have shape .* = \(6, 5\), got \(6, 4\)"
+    ):
+        jt.drift.QTF(
+            omega=w,
+            beta=np.asarray(table.beta),
+            fx=np.ones((6, 5)),
+            fy=np.ones((6, 4)),
+            nz=np.ones((6, 5)),
+        )
+    S = jt.waves.jonswap(w, hs=2.0, tp=8.0)
+    with pytest.raises(ValueError, match=r"parameter 'S' must hold the spectrum on the grid"):
+        jt.waves.mean_drift(w, S[:4], np.ones((6, 3)))
+    with pytest.raises(ValueError, match=r"the integrand must have the frequency grid omega \(6\)"):
+        jt.waves.mean_drift(w, S, np.ones((3, 6)))
+    with pytest.raises(ValueError, match=r"parameter 'T' must be > 0"):
+        jt.waves.period_to_omega(0.0)
+    with pytest.raises(ValueError, match=r"parameter 'S' must have a positive area"):
+        jt.waves.spectral_periods(w, np.zeros(6))

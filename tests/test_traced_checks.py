@@ -26,6 +26,12 @@ def _qtf():
     return jt.tow.load("barge2a").drift()[0]
 
 
+@functools.cache
+def _resistance_inputs():
+    tow = jt.tow.load("barge2a")
+    return tow.resistance(), tow.sea_states[0]
+
+
 def _model():
     return jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.Towline(l0=1.0, EA=50.0, xp=0.5))
 
@@ -90,6 +96,40 @@ CASES = {
         2.0,
         6.0,
         "the vessel overtakes the waves",
+        False,
+    ),
+    "resistance (speed)": (
+        lambda x, throw=True: (
+            jt.resistance.resistance(*_resistance_inputs(), speed=x, throw=throw).resistance
+        ),
+        1.0,
+        jnp.nan,
+        "parameter 'speed' must be finite",
+        False,
+    ),
+    "resistance (sea state)": (
+        lambda x, throw=True: (
+            jt.resistance.resistance(
+                _resistance_inputs()[0],
+                eqx.tree_at(lambda s: s.hs, _resistance_inputs()[1], x),
+                1.0,
+                throw=throw,
+            ).resistance
+        ),
+        5.0,
+        -1.0,
+        "parameter 'hs' must be >= 0 and finite",
+        False,
+    ),
+    "required_pull (sea state)": (
+        lambda x, throw=True: (
+            jt.resistance.required_pull(
+                _resistance_inputs()[0], eqx.tree_at(lambda s: s.hs, _resistance_inputs()[1], x)
+            ).bollard_pull
+        ),
+        5.0,
+        jnp.nan,
+        "parameter 'hs' must be >= 0 and finite",
         False,
     ),
     "pierson_moskowitz": (

@@ -128,7 +128,8 @@ def main(argv=None) -> int:
         kept = (
             f" Files already written in {out} are complete (each is written under a temporary "
             "name and renamed when done; the list is in its jaxtow_run.json); `jaxtow map` "
-            "keeps its finished chunks and resumes from them when run again."
+            "keeps its finished chunks and resumes from them when run again; `jaxtow study` "
+            "keeps its finished steps and continues from them with --resume."
             if out is not None
             else ""
         )

@@ -53,6 +53,26 @@ def symmetry_residual(beta, fx, fy, nz, *, length: float = 1.0) -> float:
     return max(float(np.max(np.abs(fy[:, cols]))) / sf, float(np.max(np.abs(nz[:, cols]))) / sn)
 
 
+def _check_components(omega, beta, components) -> None:
+    """Eager: each of (fx, fy, nz) has shape (len(omega), len(beta)) and is finite; the
+    error names the component, and for a non-finite value its (omega, beta) place."""
+    w, b = np.ravel(np.asarray(omega, float)), np.ravel(np.asarray(beta, float))
+    for name, v in zip(_COMPONENTS, components):
+        v = np.asarray(v, float)
+        if v.shape != (w.size, b.size):
+            raise ValueError(
+                f"parameter {name!r} must have shape (len(omega), len(beta)) = "
+                f"{(w.size, b.size)}, got {v.shape}"
+            )
+        bad = np.argwhere(~np.isfinite(v))
+        if bad.size:
+            i, j = bad[0]
+            raise ValueError(
+                f"parameter {name!r} must be finite: {v[i, j]} at omega = {w[i]:g} rad/s, "
+                f"beta = {math.degrees(b[j]):g} deg ({len(bad)} non-finite values)"
+            )
+
+
 class QTF(eqx.Module):
     """Mean-drift QTF table: ``omega`` (nω,) rad/s ascending > 0, ``beta`` (nβ,) rad
     ascending, ``values`` (3, nω, nβ) = (Fx, Fy, Nz) per ζa² [N/m², N·m/m²].
@@ -83,20 +103,14 @@ class QTF(eqx.Module):
     def __init__(self, *, omega, beta, fx, fy, nz, sectional=None):
         w = np.asarray(omega, float)
         b = np.asarray(beta, float)
-        vals = np.stack([np.asarray(v, float) for v in (fx, fy, nz)])
         if w.ndim != 1 or w.size < 2 or not np.all(np.diff(w) > 0) or w[0] <= 0:
             raise ValueError(
                 "parameter 'omega' must be a 1-D ascending grid of >= 2 positive frequencies"
             )
         if b.ndim != 1 or b.size < 2 or not np.all(np.diff(b) > 0):
             raise ValueError("parameter 'beta' must be a 1-D ascending grid of >= 2 headings [rad]")
-        if vals.shape != (3, w.size, b.size):
-            raise ValueError(
-                f"fx, fy, nz must each have shape (len(omega), len(beta)) = {(w.size, b.size)}"
-            )
-        for name, v in zip(_COMPONENTS, vals):
-            if not np.all(np.isfinite(v)):
-                raise ValueError(f"parameter {name!r} must be finite")
+        _check_components(w, b, (fx, fy, nz))
+        vals = np.stack([np.asarray(v, float) for v in (fx, fy, nz)])
         full = bool(abs(b[0] + math.pi) < 1e-9 and abs(b[-1] - math.pi) < 1e-9)
         scale = float(np.max(np.abs(vals))) if vals.size else 0.0
         if full and not np.allclose(vals[..., 0], vals[..., -1], rtol=1e-12, atol=1e-12 * scale):
@@ -161,6 +175,7 @@ class QTF(eqx.Module):
         if b.ndim != 1 or b.size < 2 or b[0] != 0.0 or np.any(np.diff(b) <= 0):
             raise ValueError("parameter 'beta' must ascend from 0 for symmetry completion")
         fx, fy, nz = (np.asarray(v, float) for v in (fx, fy, nz))
+        _check_components(omega, b, (fx, fy, nz))
         tol = SYMMETRY_TOL if tol is None else float(tol)
         res = symmetry_residual(b, fx, fy, nz, length=length)
         if not res <= tol:

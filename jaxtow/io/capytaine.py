@@ -10,6 +10,7 @@ import numpy as np
 import xarray as xr
 
 from ..drift._qtf import QTF
+from ._netcdf import read_netcdf
 from ._tables import _heading_deg, _reference, _shift_yaw, complete_table
 
 _CAPY_VARIABLES = ("drift_force_surge", "drift_force_sway", "drift_force_yaw")
@@ -116,7 +117,7 @@ def read_capytaine_drift(path, **options) -> QTF:
     axis, as Capytaine writes them); the options of `qtf_from_capytaine`."""
 
     path = Path(path)
-    ds = xr.load_dataset(path)
+    ds = read_netcdf(path, "a Capytaine drift result")
     try:
         return qtf_from_capytaine(ds, **options)
     except ValueError as e:

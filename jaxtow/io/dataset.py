@@ -12,6 +12,7 @@ from .._config import __version__
 from .._parameters import describe
 from .._vessel import VESSEL_PARAMETERS
 from ._atomic import atomic_path
+from ._netcdf import read_netcdf
 
 #: name → (units, long_name) of the sweep outputs.
 VARIABLES = {
@@ -176,7 +177,8 @@ def save_dataset(ds: xr.Dataset, path) -> None:
 
 
 def load_dataset(path) -> xr.Dataset:
-    ds = xr.load_dataset(path)
+    """A dataset written by `save_dataset` (a clear error for a file that is not NetCDF)."""
+    ds = read_netcdf(path, "a jaxtow result dataset (save_dataset)")
     for k, v in ds.data_vars.items():
         if v.attrs.get("jaxtow_bool"):
             ds[k] = v.astype(bool)

@@ -10,6 +10,7 @@ import xarray as xr
 
 from ..drift._qtf import QTF
 from ._atomic import save_netcdf
+from ._netcdf import read_netcdf, table_variables
 from .capytaine import read_capytaine_drift
 from .wamit import read_drift_file
 
@@ -83,7 +84,13 @@ def load_qtf(path) -> QTF:
     every (ω, β) pair exactly once."""
     path = Path(path)
     if path.suffix == ".csv":
-        t = np.atleast_2d(np.loadtxt(path, delimiter=","))
+        try:
+            t = np.atleast_2d(np.loadtxt(path, delimiter=","))
+        except (ValueError, UnicodeDecodeError) as e:
+            raise ValueError(
+                f"{path}: not a jaxtow CSV drift table (omega, beta, fx, fy, nz): "
+                f"{str(e).splitlines()[0]}"
+            ) from None
         if t.shape[1] != 5:
             raise ValueError(
                 f"{path}: expected 5 columns (omega, beta, fx, fy, nz), got {t.shape[1]}"
@@ -102,17 +109,15 @@ def load_qtf(path) -> QTF:
         v[:, i, j] = t[:, 2:].T
         return QTF(omega=ws, beta=bs, fx=v[0], fy=v[1], nz=v[2])
 
-    ds = xr.load_dataset(path)
+    ds = read_netcdf(path, "a jaxtow QTF file (save_qtf)")
     names = [n for n, _, _ in SECTIONAL_VARIABLES]
-    sec = [ds[n].values for n in names] if all(n in ds for n in names) else None
-    return QTF(
-        omega=ds.omega.values,
-        beta=ds.beta.values,
-        fx=ds.fx.values,
-        fy=ds.fy.values,
-        nz=ds.nz.values,
-        sectional=sec,
+    table = table_variables(ds, path, ("fx", "fy", "nz"), ("omega", "beta"))
+    sec = (
+        list(table_variables(ds, path, names, ("omega", "beta")).values())
+        if all(n in ds for n in names)
+        else None
     )
+    return QTF(omega=ds.omega.values, beta=ds.beta.values, **table, sectional=sec)
 
 
 def read_qtf(path, **options):
@@ -128,8 +133,7 @@ def read_qtf(path, **options):
             )
         return load_qtf(path), dict(file=str(path), format="jaxtow CSV")
     if path.suffix == ".nc":
-        with xr.open_dataset(path) as ds:
-            own = "jaxtow_qtf" in ds.attrs
+        own = "jaxtow_qtf" in read_netcdf(path, "a drift table").attrs
         if own:
             if options:
                 raise ValueError(

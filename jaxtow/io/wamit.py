@@ -57,6 +57,20 @@ _MEAN_COLUMNS = 8
 _QTF_COLUMNS = 9
 
 
+def _text(path: Path) -> str:
+    """The text of a numeric output file; a binary file is refused by name."""
+    data = path.read_bytes()
+    try:
+        if b"\x00" in data[:4096]:
+            raise UnicodeDecodeError("ascii", data, 0, 1, "NUL byte")
+        return data.decode()
+    except UnicodeDecodeError:
+        raise ValueError(
+            f"{path}: not a text file (a WAMIT numeric output file .1/.3/.8/.9/.12d is text; "
+            "is this a binary or NetCDF file?)"
+        ) from None
+
+
 def _records(path, ncol: int | None = None):
     """Numeric records of a WAMIT numeric output file: (array (nrec, ncol), line numbers)."""
     path = Path(path)
@@ -64,7 +78,7 @@ def _records(path, ncol: int | None = None):
         raise ValueError(f"{path}: no such file")
     rows, lines, width = [], [], None
     first = True
-    for k, line in enumerate(path.read_text().splitlines(), 1):
+    for k, line in enumerate(_text(path).splitlines(), 1):
         parts = line.split()
         if not parts:
             continue
@@ -78,6 +92,11 @@ def _records(path, ncol: int | None = None):
                 f"{path}, line {k}: not a WAMIT numeric record: {line.strip()!r}"
             ) from None
         first = False
+        if not all(math.isfinite(x) for x in vals):
+            raise ValueError(
+                f"{path}, line {k}: a non-finite number in a WAMIT record ({line.strip()!r}); "
+                "WAMIT writes finite values, so the file is damaged or was not written by WAMIT"
+            )
         if width is None:
             width = len(vals)
             if ncol is not None and width != ncol:

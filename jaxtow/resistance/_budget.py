@@ -7,7 +7,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from .._rules import NONNEGATIVE, POSITIVE, guard, is_concrete
+from .._rules import FINITE, NONNEGATIVE, POSITIVE, check_now, guard, is_concrete
 from .._units import RHO_SEA, froude_number
 from .._vessel import Vessel
 from ..drift import (
@@ -180,11 +180,35 @@ class Budget(eqx.Module):
 
 
 def resistance(
-    tow: TowResistance, sea: SeaState, speed, *, heading=0.0, tug: Tug | None = None
+    tow: TowResistance,
+    sea: SeaState,
+    speed,
+    *,
+    heading=0.0,
+    tug: Tug | None = None,
+    throw: bool = True,
 ) -> Budget:
     """Resistance budget of the tow at speed U [m/s] along the course and heading ψ [rad]
     (thesis figs 7.2-7.4): along-course resistance of current/calm water, wind, waves and (if
-    a ``tug`` is given) the tug's own resistance, R = −(F_x cos ψ − F_y sin ψ)."""
+    a ``tug`` is given) the tug's own resistance, R = −(F_x cos ψ − F_y sin ψ).
+
+    ``throw=True``: the sea state, the tug, the speed and the heading are checked (eagerly,
+    or with `equinox.error_if` when traced; see `jaxtow.vector_field`); ``throw=False``: no
+    check, as in jaxtow's own compiled grids, which check their inputs first."""
+    if throw:  # eager: the same rules, before anything is computed
+        FINITE.check("speed", speed)
+        FINITE.check("heading", heading)
+        check_now(sea)
+        if tug is not None:
+            check_now(tug)
+    out = _budget(tow, sea, speed, heading, tug)
+    if not throw:
+        return out
+    checks = [FINITE.traced("speed", speed), FINITE.traced("heading", heading), *sea.checks()]
+    return guard(out, checks + (tug.checks() if tug is not None else []))
+
+
+def _budget(tow: TowResistance, sea: SeaState, speed, heading, tug: Tug | None) -> Budget:
     speed, heading = jnp.asarray(speed, float), jnp.asarray(heading, float)
     body = tow.body_forces(sea, speed, heading)
     along = -(body[:, 0] * jnp.cos(heading) - body[:, 1] * jnp.sin(heading))
@@ -231,7 +255,10 @@ def required_pull(
     bollard pull BP with η BP P(U)/BP = R_tow(U) + R_tug(U). Differentiable in every input.
     A negative total (the environment pushes the tow ahead) is reported, not clipped."""
     NONNEGATIVE.check("speed", speed)
+    FINITE.check("heading", heading)
+    check_now(sea)
     if tug is not None:
+        check_now(tug)
         POSITIVE.check("bollard_pull", tug.bollard_pull)
         if is_concrete(speed) and is_concrete(tug.free_speed):
             if np.any(np.asarray(speed) >= np.asarray(tug.free_speed)):
@@ -240,10 +267,11 @@ def required_pull(
                     f"{float(np.max(tug.free_speed)):g} m/s (where its pull vanishes), got "
                     f"{speed!r}"
                 )
-    b = resistance(tow, sea, speed, heading=heading, tug=tug)
+    b = resistance(tow, sea, speed, heading=heading, tug=tug, throw=False)
     total = b.total
     bp = total if tug is None else total / (tug.efficiency * tug.shape(b.speed))
-    checks = [NONNEGATIVE.traced("speed", speed)]
+    checks = [NONNEGATIVE.traced("speed", speed), FINITE.traced("heading", heading)]
+    checks += sea.checks() + (tug.checks() if tug is not None else [])
     if tug is not None:
         below = jnp.any(jnp.asarray(speed) >= tug.free_speed)
         checks.append((below, "parameter 'speed' must be below the tug's free speed"))
@@ -267,6 +295,8 @@ def _resistance_grid(tow, sea, speeds, tps, *, heading, tug):
     speeds, tps = jnp.asarray(speeds, float), jnp.asarray(tps, float)
 
     def one(s, t):
-        return resistance(tow, eqx.tree_at(lambda x: x.tp, sea, t), s, heading=heading, tug=tug)
+        return resistance(
+            tow, eqx.tree_at(lambda x: x.tp, sea, t), s, heading=heading, tug=tug, throw=False
+        )
 
     return jax.vmap(lambda s: jax.vmap(lambda t: one(s, t))(tps))(speeds)

@@ -52,7 +52,9 @@ class OperatingPoint(eqx.Module):
 
 def _excess(speed, args):
     tow, tug, sea, heading = args
-    return tug.pull(speed) - resistance(tow, sea, speed, heading=heading, tug=tug).total
+    return (
+        tug.pull(speed) - resistance(tow, sea, speed, heading=heading, tug=tug, throw=False).total
+    )
 
 
 @eqx.filter_jit
@@ -83,7 +85,7 @@ def _operating_point(tow, tug, sea, heading, n_scan, rtol):
             RESULTS.where(fn_op >= FROUDE_MAX, RESULTS.froude_too_high, RESULTS.successful),
         ),
     )
-    b = resistance(tow, sea, speed, heading=heading, tug=tug)
+    b = resistance(tow, sea, speed, heading=heading, tug=tug, throw=False)
     return OperatingPoint(
         speed=speed, pull=tug.pull(speed), budget=b, froude=fn_op, result=result, margin=g[0]
     )

@@ -26,8 +26,22 @@ def spectral_integral(
 ) -> Float[Array, "..."]:
     """2 ∫ S(ω) X(ω) dω by the trapezoidal rule on the grid ``omega``: the one irregular-sea
     integral of jaxtow. ``X`` has ω on axis 0 and any trailing axes (a QTF component (n_ω,),
-    the three drift components (n_ω, 3), a damping matrix (n_ω, 3, 3))."""
+    the three drift components (n_ω, 3), a damping matrix (n_ω, 3, 3)). Shapes are checked
+    (also under jit and vmap, where they are known) with an error naming the argument."""
     X = jnp.asarray(X)
+    nw = jnp.shape(omega)
+    if len(nw) != 1:
+        raise ValueError(f"parameter 'omega' must be a 1-D frequency grid, got shape {nw}")
+    if jnp.shape(S)[-1:] != nw:
+        raise ValueError(
+            f"parameter 'S' must hold the spectrum on the grid omega (last axis {nw[0]}), got "
+            f"shape {jnp.shape(S)}"
+        )
+    if X.shape[:1] != nw:
+        raise ValueError(
+            f"the integrand must have the frequency grid omega ({nw[0]}) on its first axis, got "
+            f"shape {X.shape}"
+        )
     return 2.0 * _integrate(omega, jnp.moveaxis(X, 0, -1) * jnp.asarray(S))
 
 

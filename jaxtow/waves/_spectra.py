@@ -186,8 +186,14 @@ def spectral_moment(omega, S, n):
 
 
 def spectral_periods(omega, S) -> dict:
-    """Hs = 4√m0, T1 = 2π m0/m1, T2 = 2π √(m0/m2) and the peak period Tp (thesis eq. 3.4)."""
+    """Hs = 4√m0, T1 = 2π m0/m1, T2 = 2π √(m0/m2) and the peak period Tp (thesis eq. 3.4).
+    A spectrum of zero area (no sea: the periods are undefined) is refused eagerly."""
     m0, m1, m2 = (spectral_moment(omega, S, n) for n in (0, 1, 2))
+    if is_concrete(m0) and not bool(np.all(np.asarray(m0) > 0)):
+        raise ValueError(
+            "parameter 'S' must have a positive area (m0 > 0): the periods of a calm sea are "
+            "undefined"
+        )
     omega = jnp.asarray(omega)
     return dict(
         hs=4 * jnp.sqrt(m0),
@@ -212,6 +218,7 @@ def hz_to_omega(f):
 
 def period_to_omega(T):
     """Period in s → rad/s."""
+    check_positive("T", T)
     return 2 * jnp.pi / jnp.asarray(T)
 
 
