@@ -43,6 +43,7 @@ if TYPE_CHECKING:
         distributed as distributed,
         drift as drift,
         forces as forces,
+        guidelines as guidelines,
         io as io,
         lines as lines,
         plotting as plotting,

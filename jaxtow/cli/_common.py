@@ -82,9 +82,10 @@ def tow_model(args, tow_name=None, overrides=None, command: str = ""):
         model = tow.model()
         if getattr(args, "u_tug", None) is not None:
             model = jt.at_tug_speed(model, args.u_tug)
-        sets = {
-            k: getattr(args, k) for k in ("l0", "xp", "EA") if getattr(args, k, None) is not None
-        }
+        sets = {k: getattr(args, k) for k in ("l0", "xp") if getattr(args, k, None) is not None}
+        EA = ea_nondimensional(args, model.reference_scales)
+        if EA is not None:
+            sets["EA"] = EA
         sets.update(overrides or {})
         # with_parameters checks each value by its parameter's rule first
         return (jt.with_parameters(model, **sets) if sets else model), tow.name
@@ -92,12 +93,37 @@ def tow_model(args, tow_name=None, overrides=None, command: str = ""):
         raise SystemExit(f"error: {e}") from None
 
 
+#: The least axial stiffness [N] `--EA` takes: real towlines are 1e6-1e9 N; a smaller value
+#: is almost surely the non-dimensional EA' given to the wrong flag.
+EA_MIN_N = 1e3
+
+
+def ea_nondimensional(args, scales):
+    """EA' from ``--EA`` [N] (the tow file's unit: EA' = EA/(½ρTLU²) with the model's
+    scales) or ``--EA-nd``; None when neither is given."""
+    EA, EA_nd = getattr(args, "EA", None), getattr(args, "EA_nd", None)
+    if EA is not None and EA_nd is not None:
+        raise SystemExit("error: give --EA (in N) or --EA-nd (non-dimensional), not both")
+    if EA is None:
+        return EA_nd
+    if EA < EA_MIN_N:
+        raise SystemExit(
+            f"error: argument --EA: the axial stiffness in N (the tow file's unit), got {EA:g}; "
+            "for the non-dimensional EA' use --EA-nd"
+        )
+    if scales is None:
+        raise SystemExit("error: argument --EA: the model has no scales to convert N; use --EA-nd")
+    return EA / float(scales.force)
+
+
 def tow_option(p, multiple: bool = False, default=("barge2a",)):
     """``--tow TOW`` (or ``--tows TOW ...``) and the hidden deprecated ``--vessel(s)``."""
 
     if multiple:
         p.add_argument(
+            "--tow",
             "--tows",
+            dest="tows",
             nargs="+",
             default=list(default),
             help="tow files or built-in tows (barge2a, barge2b) (default: "
@@ -123,9 +149,16 @@ def model_options(p):
     )
     p.add_argument(
         "--EA",
-        type=float,
+        type=positive_float,
         default=None,
-        help="towline stiffness EA' (non-dimensional); default: the tow file's",
+        help="towline axial stiffness EA [N], as in the tow file (default: the tow file's)",
+    )
+    p.add_argument(
+        "--EA-nd",
+        dest="EA_nd",
+        type=positive_float,
+        default=None,
+        help="towline stiffness EA' = EA/(rho T L U^2/2), non-dimensional (instead of --EA)",
     )
     p.add_argument(
         "--l0",

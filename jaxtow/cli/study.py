@@ -11,7 +11,7 @@ from pathlib import Path
 import jaxtow as jt
 
 from ..io._atomic import write_file
-from ._common import positive_float
+from ._common import EA_MIN_N, finite_float, positive_float
 from .tow import load_tow
 
 
@@ -21,8 +21,39 @@ def safe_name(text: str) -> str:
     return re.sub(r"[^A-Za-z0-9._-]+", "_", text).strip("_") or "_"
 
 
+def _tow(args):
+    """The tow of ``jaxtow study TOW`` or ``--tow TOW``, with the command line's changes in
+    the tow file's units (`jaxtow.tow.with_changes`)."""
+    if args.tow_positional and args.tow_flag and args.tow_positional != args.tow_flag:
+        raise SystemExit("jaxtow study: error: give the tow once (TOW or --tow TOW)")
+    tow = load_tow(args.tow_positional or args.tow_flag or "barge2a", "study")
+    if args.EA is not None and args.EA < EA_MIN_N:
+        raise SystemExit(
+            f"jaxtow study: error: argument --EA: the axial stiffness in N (the tow file's "
+            f"unit), got {args.EA:g}; for the non-dimensional EA' use --EA-nd"
+        )
+    changes = {
+        key: getattr(args, attr)
+        for attr, key in (
+            ("l0", "l0"),
+            ("length", "length"),
+            ("xp", "xp"),
+            ("EA", "EA"),
+            ("EA_nd", "EA_nd"),
+            ("u_tug", "speed"),
+        )
+        if getattr(args, attr) is not None
+    }
+    if not changes:
+        return tow
+    try:
+        return jt.tow.with_changes(tow, **changes)
+    except ValueError as e:
+        raise SystemExit(f"jaxtow study: error: {e}") from None
+
+
 def cmd_study(args):
-    tow = load_tow(args.tow, "study")
+    tow = _tow(args)
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise SystemExit(f"jaxtow study: error: --out {out} exists and is not a folder")
@@ -90,11 +121,19 @@ def _print_summary(s: dict, report: Path, out: Path) -> None:
     for name, r in s.get("sea_states", {}).items():
         print(f"  sea state {name}: {r['verdict_text']}")
     for r in s.get("resistance", []):
-        sp = r.get("operating_speed")
+        worst = max(r["required_bollard_pull"], r.get("worst_required_bollard_pull", 0.0))
+        sp = r.get("operating_speed") if r["status"] == "successful" else None
         print(
-            f"  {r['sea_state']}: required bollard pull {r['required_bollard_pull'] / 9.80665e3:.1f} t"
-            + (f", operating speed {sp:.2f} m/s" if sp is not None else f"; {r['message']}")
+            f"  {r['sea_state']}: required bollard pull {worst / 9.80665e3:.1f} t (the worst "
+            "over Tp)"
+            + (
+                f", operating speed {sp:.2f} m/s ({sp / 0.514444:.1f} kn)"
+                if sp is not None
+                else f"; {r['message']}"
+            )
         )
+    for line in jt.reports.criteria_lines(s):
+        print(f"  {line}")
     for k, why in s.get("skipped", {}).items():
         print(f"  not assessed: {k} ({why})")
     for k, why in s.get("figure_errors", {}).items():
@@ -108,7 +147,23 @@ def add_parser(sub):
         help="the whole assessment of one tow: resistance, speed, stability, time domain; "
         "one HTML report",
     )
-    p.add_argument("tow", help="tow file, or a built-in tow: barge1, barge2a, barge2b")
+    p.add_argument(
+        "tow_positional",
+        metavar="TOW",
+        nargs="?",
+        help="tow file, or a built-in tow: barge1, barge2a, barge2b (default barge2a)",
+    )
+    p.add_argument("--tow", dest="tow_flag", metavar="TOW", help="the tow, as TOW")
+    p.add_argument("--l0", type=positive_float, help="towline length l0' [L] (tow file: l0)")
+    p.add_argument("--length", type=positive_float, help="towline length [m] (tow file: length)")
+    p.add_argument("--xp", type=finite_float, help="attachment point x_p' [L] (tow file: xp)")
+    p.add_argument("--EA", type=positive_float, help="towline axial stiffness [N] (tow file: EA)")
+    p.add_argument(
+        "--EA-nd", dest="EA_nd", type=positive_float, help="non-dimensional EA' (tow file: EA_nd)"
+    )
+    p.add_argument(
+        "--u-tug", type=positive_float, help="design tow speed [m/s] (tow file: [tow] speed)"
+    )
     p.add_argument("--out", default="results", help="output folder (default results)")
     p.add_argument(
         "--map-xp", nargs=3, default=None, metavar=("LO", "HI", "N"), help="override [study] map_xp"

@@ -15,7 +15,11 @@ if TYPE_CHECKING:
         claims_markdown as claims_markdown,
         claims_table as claims_table,
     )
-    from ._html import SECTIONS as REPORT_SECTIONS, tow_report_html as tow_report_html
+    from ._html import (
+        SECTIONS as REPORT_SECTIONS,
+        criteria_lines as criteria_lines,
+        tow_report_html as tow_report_html,
+    )
 
 __all__ = [
     "SOURCE_NAMES",
@@ -25,6 +29,7 @@ __all__ = [
     "claims_table",
     "REPORT_SECTIONS",
     "tow_report_html",
+    "criteria_lines",
 ]
 
 __getattr__, __dir__ = _attach(__name__, __file__)

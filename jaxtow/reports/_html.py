@@ -75,6 +75,58 @@ def _verdicts(s: dict) -> dict:
     return dict(rows=rows, classes=classes)
 
 
+def _number(x, units: str) -> str:
+    if x is None:
+        return "-"
+    if units == "1/s":
+        return f"{x:.3g} {units}"
+    return f"{x:.1f} {units}" if units not in ("-", "") else f"{x:.3g}"
+
+
+def _criteria(s: dict) -> dict:
+    """The guideline table of `jaxtow.studies` (``summary['assessment']``): criterion, value,
+    limit, PASS/FAIL, margin, basis; and the findings."""
+    a = s.get("assessment")
+    if not a:
+        return dict(rows=[], classes=[], guideline="", findings=[])
+    rows, classes = [], []
+    for ch in a["checks"]:
+        u = ch["units"]
+        sign = ">=" if ch["kind"] == "min" else "<="
+        verdict = "PASS" if ch["passed"] else "FAIL"
+        basis = ch.get("detail", "") or ""
+        if ch["estimate"]:
+            basis = (basis + "; " if basis else "") + "limit is a documented estimate"
+        rows.append(
+            [
+                ch["criterion"],
+                _number(ch["value"], u),
+                f"{sign} {_number(ch['limit'], u)}",
+                verdict,
+                _number(ch["margin"], u),
+                basis,
+            ]
+        )
+        classes.append("ok" if ch["passed"] else "bad")
+    return dict(rows=rows, classes=classes, guideline=a["guideline"], findings=a["findings"])
+
+
+def criteria_lines(summary: dict) -> list[str]:
+    """The guideline table and the findings as plain-text lines (the console's verdict; the
+    same rows as the report's)."""
+    c = _criteria(summary)
+    if not c["rows"]:
+        return []
+    out = [f"criteria of {c['guideline']}:"]
+    for crit, value, limit, verdict, margin, basis in c["rows"]:
+        out.append(
+            f"  {verdict}  {crit}: {value} (limit {limit}, margin {margin})"
+            + (f"; {basis}" if basis else "")
+        )
+    out += [f"FINDING: {f}" for f in c["findings"]]
+    return out
+
+
 def _towline_rows(t: dict) -> list:
     rows = [
         ["towline length", f"{t['length_m']:.1f} m (l0' = {t['l0']:g})"],
@@ -255,6 +307,7 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
         images={k: base64.b64encode(v).decode("ascii") for k, v in figures.items()},
         design_speed=f"{s['design_speed']:g}",
         verdicts=_verdicts(s),
+        criteria=_criteria(s),
         skipped=list(s.get("skipped", {}).items()),
         figure_errors=list(s.get("figure_errors", {}).items()),
         incomplete=s.get("incomplete"),

@@ -101,8 +101,10 @@ def status_message(p: OperatingPoint, tug: Tug, tow: TowResistance) -> str | Non
         return (
             f"no intersection of the pull and resistance curves: at zero speed the available pull "
             f"{float(p.pull) / 1e3:.1f} kN is below the resistance {need / 1e3:.1f} kN, so the tug "
-            f"cannot hold the tow in this sea state (raise 'bollard_pull' to at least "
-            f"{need / float(tug.efficiency) / 1e3:.1f} kN or see required_pull)"
+            f"cannot hold the tow in this sea state (a tug of at least "
+            f"{need / float(tug.efficiency) / 9.80665e3:.1f} t bollard pull is needed: tow file "
+            f"[tug] bollard_pull_t, Tug.bollard_pull = {need / float(tug.efficiency) / 1e3:.1f} "
+            "kN; see required_pull)"
         )
     if bool(p.result == RESULTS.no_crossing):
         return (

@@ -26,6 +26,7 @@ from .._stability import MARGINAL, STABILITY_LABELS, STABLE, stability
 from .._units import RHO_SEA, G
 from ..drift import irregular_sailing_drift
 from ..waves import DEFAULT_OMEGA, Jonswap
+from ._criteria import assessment
 from ._resistance import evaluate
 
 __all__ = ["Steps", "TowStudy", "tow_study", "verdict", "VERDICTS", "VALIDITY_WORDS"]
@@ -276,6 +277,13 @@ def tow_study(
         summary["incomplete"] = dict(
             step=steps.current, error="interrupted (Ctrl-C)", interrupted=True
         )
+    if "incomplete" not in summary:
+        try:  # the guideline table, from the numbers above
+            summary["assessment"] = assessment(tow, summary)
+        except Exception as e:  # noqa: BLE001 - as a step: keep the rest, name the failure
+            summary["incomplete"] = dict(
+                step="guideline criteria", error=f"{type(e).__name__}: {e}", interrupted=False
+            )
     summary["step_times_s"] = steps.times
     return res
 

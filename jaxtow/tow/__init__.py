@@ -33,6 +33,7 @@ from ._tow import (
     loads as loads,
     show as show,
     template as template,
+    with_changes as with_changes,
 )
 
 __all__ = [
@@ -48,5 +49,6 @@ __all__ = [
     "loads",
     "show",
     "template",
+    "with_changes",
     "schema_markdown",
 ]

@@ -200,6 +200,29 @@ SCHEMA: dict[str, dict[str, Key]] = {
             "float", "current from, relative to the course", "deg", "finite", 0.0
         ),
     ),
+    "criteria": _keys(
+        guideline=Key(
+            "str",
+            "the towing guideline the assessment checks: gl-nd-0030 | dnv-st-n001 "
+            "(docs/guidelines.md); the keys below override its values",
+            default="gl-nd-0030",
+        ),
+        wind_speed=Key("float", "weather criterion: wind speed", "m/s", "nonnegative"),
+        hs=Key("float", "weather criterion: significant wave height", "m", "nonnegative"),
+        current_speed=Key("float", "weather criterion: current speed", "m/s", "nonnegative"),
+        tug_efficiency=Key(
+            "float", "tug efficiency in the weather criterion (estimate 0.75)", "-", "unit"
+        ),
+        length_factor=Key(
+            "float", "minimum towline length = length_factor x BP/MBL", "m", "positive"
+        ),
+        connection_ratio=Key(
+            "float", "MBL of connecting parts / towline MBL (estimate 1.0)", "-", "positive"
+        ),
+        seabed_clearance=Key(
+            "float", "least clearance of the towline above the seabed", "m", "nonnegative"
+        ),
+    ),
     "study": _keys(
         map_xp=Key(
             "grid", "x_p' grid of the stability map [lo, hi, n]", "L", default=[0.0, 0.6, 25]

@@ -3,6 +3,7 @@ objects of the model (vessel, towline, scales, drift source, tug, sea states).""
 
 from __future__ import annotations
 
+import copy
 import math
 import re
 import tomllib
@@ -14,8 +15,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .. import bem, lines, presets
+from .. import bem, guidelines, lines, presets
 from .._dynamics import TowModel
+from .._simulate import initial_state
 from .._towline import Bridle, CatenaryTowline, Towline
 from .._units import Scales
 from .._vessel import Vessel
@@ -131,6 +133,7 @@ class Tow:
     wind_height: float
     warnings: tuple = ()
     line_info: list | None = None
+    criteria: guidelines.Criteria = guidelines.GUIDELINES["gl-nd-0030"]
     _cache: dict = field(default_factory=dict, repr=False, compare=False)
 
     # ------------------------------------------------------------------ model objects
@@ -314,9 +317,12 @@ def _resolve(data: dict, text: str, source: str, base=None) -> Tow:
             ("towline",),
             "missing section [towline]: a tow with a manoeuvring model needs its towline",
         )
+    if towline is not None:
+        _check_geometry(p, sec["towline"], sec["study"], vessel, towline, L)
     tug = _tug(p, sec["tug"])
     route, water_depth = _route(p, sec["route"])
     seas = _sea_states(p, seas_raw, data.get("sea_state", []))
+    crit = _criteria(p, sec["criteria"])
     return Tow(
         name=sec["tow"]["name"],
         source=source,
@@ -337,7 +343,20 @@ def _resolve(data: dict, text: str, source: str, base=None) -> Tow:
         wind_height=float(h["wind_height"]),
         warnings=tuple(p.warnings),
         line_info=line_info,
+        criteria=crit,
     )
+
+
+def _criteria(p: Problems, c: dict) -> guidelines.Criteria:
+    """The [criteria] section: a guideline and its overridden values."""
+    name = c["guideline"]
+    if name not in guidelines.GUIDELINES:
+        p.error(
+            ("criteria", "guideline"),
+            f"unknown guideline {name!r} (one of {', '.join(sorted(guidelines.GUIDELINES))})",
+        )
+        name = "gl-nd-0030"
+    return guidelines.criteria(name, **{k: float(v) for k, v in c.items() if k != "guideline"})
 
 
 def _check_sections(p: Problems, data: dict) -> None:
@@ -514,7 +533,10 @@ def _drift(p: Problems, h: dict, preset: bool, base, T: float, assumed: list):
     if isinstance(drift, dict):
         if "file" not in drift:
             p.error(("hull", "drift"), "a drift-file table needs file = PATH")
-        return dict(drift, file=str(_path(drift["file"], base)))
+        path = _path(drift["file"], base)
+        if not path.is_file():
+            p.error(("hull", "drift"), f"no such drift file: {path}")
+        return dict(drift, file=str(path))
     if isinstance(drift, str) and drift not in METHODS:
         return _named_drift(p, drift, base)
     return drift
@@ -618,6 +640,37 @@ def _check_towline_keys(p: Problems, t: dict, catalogue) -> None:
                 ("towline", pair[0]),
                 f"give exactly {what}" + (" (got both)" if len(given) == 2 else ""),
             )
+
+
+def _check_geometry(p: Problems, t: dict, study: dict, vessel, towline, L: float) -> None:
+    """What the geometry refuses before anything is computed: a towline shorter than its
+    bridle's legs, and a time-domain start the towline cannot reach."""
+    key = "l0" if "l0" in t else "length"
+    if "bridle" in t and isinstance(t["bridle"], dict) and set(t["bridle"]) == set(_BRIDLE):
+        b = {k: float(t["bridle"][k]) for k in _BRIDLE}
+        leg = math.hypot(b["apex_x"] - b["x_legs"], b["half_spread"])
+        if float(towline.l0) < leg:
+            p.error(
+                ("towline", key),
+                f"the towline ({float(towline.l0) * L:.1f} m, l0' = {float(towline.l0):.3g}) is "
+                f"shorter than the bridle's legs ({leg * L:.1f} m): lengthen it",
+            )
+    if vessel is None or not study["time_domain"]:
+        return
+    try:
+        initial_state(
+            TowModel(vessel=vessel, towline=towline),
+            psi0=math.radians(study["psi0_deg"]),
+            y0=study["y0"],
+        )
+    except ValueError:
+        reach = float(towline.length_at_tension(vessel.R0))
+        p.error(
+            ("study", "y0"),
+            f"the time-domain start y0' = {study['y0']:g} (sway offset by L, with psi0 = "
+            f"{study['psi0_deg']:g} deg) is not reachable with the towline ({reach:.3g} L "
+            f"stretched, {reach * L:.1f} m): give a smaller [study] y0 or a longer towline",
+        )
 
 
 def _attachment(p: Problems, t: dict, L: float) -> tuple[float, float]:
@@ -890,3 +943,34 @@ def show(tow: Tow) -> str:
         "",
     ]
     return "\n".join(head) + to_toml(tow.resolved, comments)
+
+
+#: `with_changes` keys: (section, key, the keys of the same quantity it replaces).
+CHANGES = {
+    "l0": ("towline", "l0", ("length",)),
+    "length": ("towline", "length", ("l0",)),
+    "xp": ("towline", "xp", ("xp_m", "bridle")),
+    "EA": ("towline", "EA", ("EA_nd",)),
+    "EA_nd": ("towline", "EA_nd", ("EA",)),
+    "speed": ("tow", "speed", ()),
+}
+
+
+def with_changes(tow: Tow, **changes) -> Tow:
+    """The tow with values changed in the tow file's own units and keys (``l0`` by L,
+    ``length`` m, ``xp`` by L, ``EA`` N, ``EA_nd``, ``speed`` m/s: `CHANGES`), resolved
+    again from its file, so that every check of a tow file applies to the changed one (the
+    command line's overrides). The source names the changes."""
+    unknown = set(changes) - set(CHANGES)
+    if unknown:
+        raise ValueError(f"unknown changes {sorted(unknown)} (one of {', '.join(CHANGES)})")
+    data = copy.deepcopy(tow.resolved)
+    for name, value in changes.items():
+        section, key, replaces = CHANGES[name]
+        table = data.setdefault(section, {})
+        for k in replaces:
+            table.pop(k, None)
+        table[key] = float(value)
+    said = ", ".join(f"{k} = {v:g}" for k, v in changes.items())
+    base = None if tow.source.startswith("<") else Path(tow.source).parent
+    return loads(to_toml(data), source=f"{tow.source} with {said}", base=base)
