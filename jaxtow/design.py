@@ -25,6 +25,7 @@ penalty on |ψ_eq| keeps designs on the branch that starts straight behind the t
 from __future__ import annotations
 
 import dataclasses
+import functools
 import math
 
 import jax
@@ -51,6 +52,8 @@ __all__ = [
     "optimise_towline",
     "grid_search",
     "sensitivity_arrays",
+    "ADVICE_MARGIN",
+    "stable_value",
 ]
 
 #: Design variables and their default box (non-dimensional): l0' towline length, x_p'
@@ -390,3 +393,66 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
     svals = jnp.asarray(svals, float)
     x, g, a = jax.jit(jax.vmap(lambda s: one(with_parameters(model, **{sname: s}))))(svals)
     return names, np.asarray(x), np.asarray(g), np.asarray(a), (sname, np.asarray(svals))
+
+
+#: Default margin of `stable_value`: the suggested value makes max Re λ' of the straight-behind
+#: equilibrium at most −0.01 (per L/U_tug), clear of the stability tolerance and of the
+#: boundary's round-off.
+ADVICE_MARGIN = 0.01
+
+
+def _abscissa_of(model: TowModel, name: str, value):
+    """(max Re λ', converged) of the straight-behind equilibrium with parameter ``name`` set to
+    ``value`` (no host callback: the caller checks the grid)."""
+    m = with_parameters(model, **{name: value})
+    y, _, ok = straight_equilibrium(m)
+    return max_real_eigenvalue(m, y, throw=False), ok
+
+
+@functools.partial(jax.jit, static_argnames=("name",))
+def _scan_abscissa(model: TowModel, name: str, values):
+    return jax.vmap(lambda v: _abscissa_of(model, name, v))(values)
+
+
+def stable_value(
+    model: TowModel,
+    name: str,
+    lo: float,
+    hi: float,
+    *,
+    n: int = 33,
+    margin: float = ADVICE_MARGIN,
+) -> dict | None:
+    """The value of parameter ``name`` in [lo, hi] nearest its present one at which the
+    straight-behind equilibrium is stable with max Re λ' = −``margin``: the smallest change
+    of that one parameter that makes the tow follow the tug.
+
+    A scan of ``n`` values (one vmapped program) brackets the crossings of max Re λ' +
+    margin; the one nearest the present value is refined by Newton's method with the
+    derivative of the abscissa by autodiff through the equilibrium (implicit function
+    theorem) and the eigenvalues. Returns {``value``, ``abscissa`` (at it), ``present``,
+    ``converged``}, or None when no value in the range makes the tow stable."""
+    present = float(get_parameter(model, name))
+    grid = np.linspace(lo, hi, n)
+    check_values(model, name, grid)
+    a, ok = (np.asarray(x) for x in _scan_abscissa(model, name, jnp.asarray(grid)))
+    g = np.where(ok, a + margin, np.nan)
+    cross = [
+        i
+        for i in range(n - 1)
+        if np.isfinite(g[i]) and np.isfinite(g[i + 1]) and np.sign(g[i]) != np.sign(g[i + 1])
+    ]
+    if not cross:
+        return None
+    i = min(cross, key=lambda k: min(abs(grid[k] - present), abs(grid[k + 1] - present)))
+
+    def f(v, m):
+        return _abscissa_of(m, name, v)[0] + margin
+
+    v0 = grid[i] if g[i] < 0 else grid[i + 1]  # start on the stable side
+    value, converged = newton(f, jnp.asarray(v0), model, lower=grid[i], upper=grid[i + 1])
+    value = float(value)
+    abscissa = float(_abscissa_of(model, name, value)[0])
+    return dict(
+        value=value, abscissa=abscissa, present=present, converged=bool(converged) and abscissa < 0
+    )

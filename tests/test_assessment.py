@@ -215,3 +215,39 @@ def test_the_deck_cargo_barge_of_the_docs_runs_end_to_end(tmp_path):
     assert any("touches the seabed" in f for f in s["assessment"]["findings"])
     html = (tmp_path / "deck-barge_report.html").read_text()
     assert "the towline touches the seabed" in html
+
+
+# ------------------------------------------------------------------ advice
+
+
+def _follows(model) -> bool:
+    eqs = jt.equilibria(model)
+    st = np.asarray(jt.stability(model, eqs.state).stability)
+    straight = np.abs(np.degrees(np.asarray(eqs.psi))) < 1.0
+    return bool(np.any(straight & np.asarray(eqs.valid) & (st == -1)))
+
+
+def test_advice_rerun_at_the_suggested_change_passes():
+    """The deck-cargo barge fishtails in calm water; moving the bridle apex forward is the
+    change the advice finds. Re-run with the whole equilibrium search at the suggested value,
+    the tow follows the tug (and at the present value it does not)."""
+    model = jt.tow.load(ROOT / "docs" / "examples" / "deck-cargo-barge.toml").model()
+    assert not _follows(model)
+    advice = jt.studies.yaw_advice(model, "calm water")
+    found = [a for a in advice if a["value"] is not None]
+    assert found and found[0]["parameter"] == "xp"
+    for a in found:
+        changed = jt.with_parameters(model, **{a["parameter"]: a["value"]})
+        assert _follows(changed), a
+        assert a["verified"] and a["new_max_real"] < 0
+        # the smallest change: a tenth of the way back toward the present value fails again
+        back = a["value"] - 0.1 * a["change"]
+        assert jt.design.stable_value(model, a["parameter"], *sorted((a["present"], back))) is None
+
+
+def test_no_advice_is_invented_for_a_hull_that_needs_skegs():
+    """Barge 2a without skegs: no towline length, attachment, speed or stiffness in the
+    searched ranges makes it follow the tug; the advice says so."""
+    advice = jt.studies.yaw_advice(jt.tow.load("barge2a").model(), "calm water")
+    assert {a["parameter"] for a in advice} == {"l0", "xp", "u_tug", "EA"}
+    assert all(a["value"] is None for a in advice)

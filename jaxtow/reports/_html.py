@@ -48,10 +48,6 @@ def _verdict_class(key: str, outside) -> str:
     return "warn" if key == "follows" else "bad"
 
 
-def _fmt(x, f="{:.3g}"):
-    return "-" if x is None else f.format(x)
-
-
 def _verdicts(s: dict) -> dict:
     rows, classes = [], []
     if "calm" in s:
@@ -111,6 +107,36 @@ def _criteria(s: dict) -> dict:
     return dict(rows=rows, classes=classes, guideline=a["guideline"], findings=a["findings"])
 
 
+def _advice(s: dict) -> list:
+    """Rows of the advice table: condition, what to change, from, to, new max Re λ, checked."""
+    rows = []
+    for a in s.get("advice", []):
+        if a["value"] is None:
+            lo, hi = a["searched"]
+            rows.append(
+                [
+                    a["condition"],
+                    a["what"],
+                    a["present_text"],
+                    f"none in [{lo:.3g}, {hi:.3g}]",
+                    "-",
+                    "-",
+                ]
+            )
+            continue
+        rows.append(
+            [
+                a["condition"],
+                a["what"],
+                a["present_text"],
+                a["value_text"],
+                f"{a['new_max_real']:.3g} 1/s",
+                "follows the tug" if a["verified"] else "NOT confirmed by the full search",
+            ]
+        )
+    return rows
+
+
 def criteria_lines(summary: dict) -> list[str]:
     """The guideline table and the findings as plain-text lines (the console's verdict; the
     same rows as the report's)."""
@@ -124,14 +150,23 @@ def criteria_lines(summary: dict) -> list[str]:
             + (f"; {basis}" if basis else "")
         )
     out += [f"FINDING: {f}" for f in c["findings"]]
+    for cond, what, now, to, lam, checked in _advice(summary):
+        out.append(
+            f"ADVICE ({cond}): {what} {now} -> {to}" + (f"; {checked}" if lam != "-" else "")
+        )
     return out
 
 
-def _towline_rows(t: dict) -> list:
+def _towline_rows(t: dict, s: dict) -> list:
+    L, F = s["length"], s["force_scale"]
     rows = [
         ["towline length", f"{t['length_m']:.1f} m (l0' = {t['l0']:g})"],
-        ["attachment", f"x_p' = {t['xp']:g}, y_p' = {t['yp']:g}"],
-        ["stiffness EA'", f"{t['EA_nd']:.1f}"],
+        [
+            "attachment",
+            f"{t['xp'] * L:.1f} m ahead of the CoG, {t['yp'] * L:.1f} m to port "
+            f"(x_p' = {t['xp']:g}, y_p' = {t['yp']:g})",
+        ],
+        ["axial stiffness EA", f"{t['EA_nd'] * F:.3g} N (EA' = {t['EA_nd']:.1f})"],
     ]
     g = t.get("strength")
     if g:
@@ -179,7 +214,7 @@ def _tow_rows(s: dict) -> list:
         c = s["stability_coefficient_c"]
         rows.append(["course stability c", f"{c:+.4f} ({'stable' if c > 0 else 'unstable'})"])
     if "towline" in s:
-        rows += _towline_rows(s["towline"])
+        rows += _towline_rows(s["towline"], s)
     if "tug" in s:
         g = s["tug"]
         rows.append(
@@ -210,12 +245,13 @@ def _conditions(s: dict) -> list:
 def _stability(s: dict) -> list:
     out = []
     for label, rec in _conditions(s):
+        F, rate = s["force_scale"], 1.0 / s["time_scale"]
         rows = [
             [
                 f"{e['psi_deg']:+.3f}",
                 f"{e['gamma_deg']:+.3f}",
-                f"{e['tension']:.4f}",
-                f"{e['max_real']:+.5f}",
+                f"{e['tension'] * F / 1e3:.1f}",
+                f"{e['max_real'] * rate:+.3g}",
                 e["stability"],
                 "yes" if e["valid"] else "NO: " + ", ".join(e["failed_flags"]),
             ]
@@ -232,10 +268,12 @@ def _stability(s: dict) -> list:
 def _map(s: dict) -> dict | None:
     if "map" not in s:
         return None
-    m = s["map"]
+    m, L = s["map"], s["length"]
     return dict(
-        xp=f"{m['xp'][0]:g} to {m['xp'][1]:g} ({m['xp'][2]} points)",
-        l0=f"{m['l0'][0]:g} to {m['l0'][1]:g} ({m['l0'][2]} points)",
+        xp=f"{m['xp'][0] * L:.1f} to {m['xp'][1] * L:.1f} m (x_p' {m['xp'][0]:g} to "
+        f"{m['xp'][1]:g}, {m['xp'][2]} points)",
+        l0=f"{m['l0'][0] * L:.0f} to {m['l0'][1] * L:.0f} m (l0' {m['l0'][0]:g} to "
+        f"{m['l0'][1]:g}, {m['l0'][2]} points)",
         share=f"{100 * m['straight_stable_share']:.0f}",
     )
 
@@ -243,16 +281,22 @@ def _map(s: dict) -> dict | None:
 def _time_domain(s: dict) -> dict | None:
     if "time_domain" not in s:
         return None
-    t = s["time_domain"]
+    t, L, T = s["time_domain"], s["length"], s["time_scale"]
     yr = t["yaw_range"]
+    width, period = t["path_width"], t["slewing_period"]
     row = [
         t["outcome"],
-        _fmt(t["path_width"]),
+        "-" if width is None else f"{width * L:.1f}",
         "-" if not yr else f"{yr[0]:.1f} .. {yr[1]:.1f}",
-        _fmt(t["slewing_period"]),
+        "-" if period is None else f"{period * T:.0f}",
         "yes" if t["ended_early"] else "no",
     ]
-    return dict(row=row, psi0=f"{t['psi0_deg']:g}", y0=f"{t['y0']:g}", t1=f"{t['t1']:g}")
+    return dict(
+        row=row,
+        psi0=f"{t['psi0_deg']:g}",
+        y0=f"{t['y0'] * L:.1f} m (y0' = {t['y0']:g})",
+        t1=f"{t['t1'] * T / 60:.0f} min ({t['t1']:g} L/U)",
+    )
 
 
 def _mean_drift(s: dict) -> dict | None:
@@ -308,6 +352,7 @@ def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
         design_speed=f"{s['design_speed']:g}",
         verdicts=_verdicts(s),
         criteria=_criteria(s),
+        advice=_advice(s),
         skipped=list(s.get("skipped", {}).items()),
         figure_errors=list(s.get("figure_errors", {}).items()),
         incomplete=s.get("incomplete"),

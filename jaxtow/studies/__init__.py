@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 from .._lazy import attach as _attach
 
 if TYPE_CHECKING:
+    from ._advice import ADVICE_RANGES as ADVICE_RANGES, yaw_advice as yaw_advice
     from ._assessment import (
         VERDICTS as VERDICTS,
         TowStudy as TowStudy,
@@ -135,6 +136,8 @@ __all__ = [
     "VERDICTS",
     "TowStudy",
     "tow_study",
+    "ADVICE_RANGES",
+    "yaw_advice",
     "verdict",
 ]
 

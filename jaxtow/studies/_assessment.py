@@ -26,6 +26,7 @@ from .._stability import MARGINAL, STABILITY_LABELS, STABLE, stability
 from .._units import RHO_SEA, G
 from ..drift import irregular_sailing_drift
 from ..waves import DEFAULT_OMEGA, Jonswap
+from ._advice import yaw_advice
 from ._criteria import assessment
 from ._resistance import evaluate
 
@@ -249,8 +250,8 @@ def tow_study(
     has_model = tow.vessel is not None and tow.towline is not None
     seas = list(tow.sea_states)
     res = TowStudy(tow)
-    n_steps = 1 + (
-        has_model * (2 + bool(tow.tug) + (len(seas) if opts["sea_states"] else 0) + bool(do_td))
+    n_steps = 2 + (  # drift and criteria; the model's steps and the advice
+        has_model * (3 + bool(tow.tug) + (len(seas) if opts["sea_states"] else 0) + bool(do_td))
     )
     steps = Steps(n_steps, enabled=progress, store=store)
     res.summary = summary = _particulars(tow)
@@ -269,6 +270,17 @@ def tow_study(
                 _time_domain(tow.model(), opts, t1, n_save, steps, res)
             else:
                 summary["skipped"]["time domain"] = "switched off in [study]"
+        summary["assessment"] = steps.run(
+            "criteria", "guideline criteria", assessment, tow, summary
+        )
+        if has_model:
+            summary["advice"] = steps.run(
+                "advice",
+                "advice: the smallest change that makes the tow follow the tug",
+                _advice,
+                tow,
+                summary,
+            )
     except Exception as e:  # noqa: BLE001 - the study keeps what finished and names the failure
         summary["incomplete"] = dict(
             step=steps.current, error=f"{type(e).__name__}: {e}", interrupted=False
@@ -277,15 +289,25 @@ def tow_study(
         summary["incomplete"] = dict(
             step=steps.current, error="interrupted (Ctrl-C)", interrupted=True
         )
-    if "incomplete" not in summary:
-        try:  # the guideline table, from the numbers above
-            summary["assessment"] = assessment(tow, summary)
-        except Exception as e:  # noqa: BLE001 - as a step: keep the rest, name the failure
-            summary["incomplete"] = dict(
-                step="guideline criteria", error=f"{type(e).__name__}: {e}", interrupted=False
-            )
     summary["step_times_s"] = steps.times
     return res
+
+
+def _advice(tow, summary: dict) -> list:
+    """`yaw_advice` for every condition whose yaw criterion fails (calm water and the sea
+    states), in the order of the table."""
+    out = []
+    for ch in summary["assessment"]["checks"]:
+        if not ch["key"].startswith("yaw_") or ch["passed"]:
+            continue
+        condition = ch["key"][len("yaw_") :]
+        if condition == "calm water":
+            model = tow.model()
+        else:
+            name = condition[len("sea state ") :]
+            model = tow.sea_model(next(s for s in tow.sea_states if s.name == name))
+        out += yaw_advice(model, condition)
+    return out
 
 
 def _drift_step(tow, seas, steps: Steps, res: TowStudy) -> None:
@@ -333,6 +355,8 @@ def _particulars(tow) -> dict:
         length=sc.length,
         breadth=float(tow.resolved["vessel"]["breadth"]),
         draft=sc.draft,
+        force_scale=float(sc.force),  # ½ρTLU² [N]: T' and EA' times this are in N
+        time_scale=sc.length / float(sc.u_tug),  # L/U [s]: t' times this is in s
         drift_source="",
         sailing_form=tow.form,
         assumed=[list(a) for a in tow.assumed],
