@@ -50,15 +50,12 @@ def _verdict_class(key: str, outside) -> str:
 
 def _verdicts(s: dict) -> dict:
     rows, classes = [], []
-    if "calm" in s:
-        c = s["calm"]
-        rows.append(["calm water", c["verdict_text"]])
+    for label, c in _conditions(s):
+        at = "" if "at_operating_speed" in label or label == "calm water" else ", design speed"
+        rows.append([label + at, c["verdict_text"]])
         classes.append(_verdict_class(c["verdict"], c["outside_validity"]))
-    for name, r in s.get("sea_states", {}).items():
-        rows.append([f"sea state {name} (Hs {r['hs']:g} m, Tp {r['tp']:g} s)", r["verdict_text"]])
-        classes.append(_verdict_class(r["verdict"], r["outside_validity"]))
     for r in s.get("resistance", []):
-        if "operating_speed" in r:
+        if r["status"] == "successful":
             txt = (
                 f"operating speed {r['operating_speed']:.2f} m/s "
                 f"({r['operating_speed'] / 0.514444:.1f} kn)"
@@ -169,6 +166,14 @@ def _towline_rows(t: dict, s: dict) -> list:
         ["axial stiffness EA", f"{t['EA_nd'] * F:.3g} N (EA' = {t['EA_nd']:.1f})"],
     ]
     g = t.get("strength")
+    if not g:
+        rows.append(
+            [
+                "towline strength",
+                "MBL not given: name a catalogue line ([towline] line and diameter_mm, or "
+                "segments) to check it against the bollard pull",
+            ]
+        )
     if g:
         rows.append(
             [
@@ -236,16 +241,26 @@ def _resistance(s: dict) -> dict | None:
 
 
 def _conditions(s: dict) -> list:
-    """(label, record) of calm water and of each sea state assessed."""
-    return ([("calm water", s["calm"])] if "calm" in s else []) + [
-        (f"sea state {k}", v) for k, v in s.get("sea_states", {}).items()
-    ]
+    """(label, record) of calm water and of each sea state assessed, at the design speed and
+    at the sea state's operating speed where it differs."""
+    out = [("calm water", s["calm"])] if "calm" in s else []
+    for k, v in s.get("sea_states", {}).items():
+        out.append((f"sea state {k} (Hs {v['hs']:g} m, Tp {v['tp']:g} s)", v))
+        if "at_operating_speed" in v:
+            u = v["at_operating_speed"]["speed"]
+            out.append(
+                (f"sea state {k} at its operating speed {u:.2f} m/s", v["at_operating_speed"])
+            )
+    return out
 
 
 def _stability(s: dict) -> list:
     out = []
     for label, rec in _conditions(s):
-        F, rate = s["force_scale"], 1.0 / s["time_scale"]
+        F, rate = (
+            rec.get("force_scale", s["force_scale"]),
+            1.0 / rec.get("time_scale", s["time_scale"]),
+        )
         rows = [
             [
                 f"{e['psi_deg']:+.3f}",

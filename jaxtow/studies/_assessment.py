@@ -17,7 +17,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from .. import resistance
-from .._dynamics import all_valid, validity
+from .._dynamics import all_valid, at_tug_speed, validity
 from .._equilibrium import equilibria
 from .._metrics import fishtail_metrics, trajectory
 from .._results import sweep
@@ -294,19 +294,20 @@ def tow_study(
 
 
 def _advice(tow, summary: dict) -> list:
-    """`yaw_advice` for every condition whose yaw criterion fails (calm water and the sea
-    states), in the order of the table."""
+    """`yaw_advice` for every condition whose yaw criterion fails (calm water, the sea
+    states at the design speed and at their operating speeds), in the order of the table."""
+    models = {"calm water": tow.model()}
+    for s in tow.sea_states:
+        models[f"sea state {s.name}"] = tow.sea_model(s)
+        rec = summary.get("sea_states", {}).get(s.name, {})
+        if "at_operating_speed" in rec:
+            u = rec["at_operating_speed"]["speed"]
+            models[f"sea state {s.name} at {u:.2f} m/s"] = at_tug_speed(tow.sea_model(s), u)
     out = []
     for ch in summary["assessment"]["checks"]:
-        if not ch["key"].startswith("yaw_") or ch["passed"]:
-            continue
-        condition = ch["key"][len("yaw_") :]
-        if condition == "calm water":
-            model = tow.model()
-        else:
-            name = condition[len("sea state ") :]
-            model = tow.sea_model(next(s for s in tow.sea_states if s.name == name))
-        out += yaw_advice(model, condition)
+        if ch["key"].startswith("yaw_") and not ch["passed"]:
+            condition = ch["key"][len("yaw_") :]
+            out += yaw_advice(models[condition], condition)
     return out
 
 
@@ -332,13 +333,21 @@ def _model_steps(tow, seas, speeds, steps: Steps, res: TowStudy, *, progress: bo
         summary.update(_resistance(tow, seas, speeds, steps, res))
     else:
         summary["skipped"]["resistance"] = "the tow file has no [tug]"
+    design = float(tow.scales.u_tug)
+    ops = {  # the sea states whose operating speed differs from the design speed
+        r["sea_state"]: r["operating_speed"]
+        for r in summary.get("resistance", [])
+        if r["status"] == "successful" and abs(r["operating_speed"] - design) > 1e-3
+    }
+    if tow.study["sea_states"]:
+        steps.total += len(ops)
     summary["calm"] = steps.run(
         "calm", "equilibria and stability in calm water", _equilibria_record, model
     )
     if tow.study["sea_states"]:
         summary["sea_states"] = {}
         for s in seas:
-            summary["sea_states"][s.name] = _sea_state_record(tow, s, steps)
+            summary["sea_states"][s.name] = _sea_state_record(tow, s, steps, ops.get(s.name))
     if tow.line_info:
         summary["towline"]["strength"] = _strength_record(tow, model, summary)
 
@@ -410,14 +419,20 @@ def _resistance(tow, seas, speeds, steps: Steps, res: TowStudy) -> dict:
 
     def budget():
         rows = [evaluate(tr, tow.tug, s, 0.0, tow.route_length) for s in seas]
+        # the figures reach past every operating point (the [study] speeds may stop short)
+        top = max(
+            [float(speeds[-1])]
+            + [1.1 * r["operating_speed"] for r in rows if "operating_speed" in r]
+        )
+        u = speeds if top <= float(speeds[-1]) else np.linspace(float(speeds[0]), top, speeds.size)
         budgets = {}
         for s in seas:
-            b = resistance.resistance_grid(tr, s, jnp.asarray(speeds), jnp.array([float(s.tp)]))
+            b = resistance.resistance_grid(tr, s, jnp.asarray(u), jnp.array([float(s.tp)]))
             budgets[s.name] = dict(
-                speeds=speeds,
+                speeds=u,
                 components=np.asarray(b.resistance[:, 0]),
                 total=np.asarray(b.total[:, 0]),
-                pull=np.asarray(tow.tug.pull(jnp.asarray(speeds))),
+                pull=np.asarray(tow.tug.pull(jnp.asarray(u))),
             )
         return rows, budgets
 
@@ -435,12 +450,34 @@ def _resistance(tow, seas, speeds, steps: Steps, res: TowStudy) -> dict:
     )
 
 
-def _sea_state_record(tow, s, steps: Steps) -> dict:
+def _at_speed(model, speed: float) -> dict:
+    """`_equilibria_record` of the model at tow speed ``speed`` [m/s], with the scales its
+    non-dimensional numbers refer to."""
+    model = at_tug_speed(model, speed)
+    sc = model.reference_scales
+    rec = _equilibria_record(model)
+    rec.update(speed=speed, force_scale=float(sc.force), time_scale=sc.length / float(sc.u_tug))
+    return rec
+
+
+def _sea_state_record(tow, s, steps: Steps, operating_speed: float | None = None) -> dict:
+    """Equilibria and stability in sea state ``s`` at the design speed and, where it differs,
+    at the sea state's operating speed (``at_operating_speed``): a tow that follows the tug
+    at one speed may not at the other."""
     rec = steps.run(
         f"sea state {s.name}",
         f"equilibria and stability in sea state {s.name!r}",
         lambda: _equilibria_record(tow.sea_model(s)),
     )
+    if operating_speed is not None:
+        rec["at_operating_speed"] = steps.run(
+            f"sea state {s.name} at its operating speed",
+            f"equilibria and stability in sea state {s.name!r} at its operating speed "
+            f"{operating_speed:.2f} m/s",
+            _at_speed,
+            tow.sea_model(s),
+            operating_speed,
+        )
     notes = []
     if any(float(a) != 0.0 for a in (s.wave_angle, s.wind_angle)):
         notes.append(

@@ -124,15 +124,22 @@ def _line_checks(tow, s: dict, c: guidelines.Criteria) -> list:
     return out
 
 
+def yaw_conditions(s: dict) -> list:
+    """(name, equilibria record) of every condition the study judged: calm water, each sea
+    state at the design speed and, where it differs, at its operating speed."""
+    out = [("calm water", s["calm"])] if "calm" in s else []
+    for k, v in s.get("sea_states", {}).items():
+        out.append((f"sea state {k}", v))
+        if "at_operating_speed" in v:
+            u = v["at_operating_speed"]["speed"]
+            out.append((f"sea state {k} at {u:.2f} m/s", v["at_operating_speed"]))
+    return out
+
+
 def _yaw_checks(s: dict) -> list:
     out = []
-    conditions = [("calm water", s.get("calm"))] + [
-        (f"sea state {k}", v) for k, v in s.get("sea_states", {}).items()
-    ]
-    for name, rec in conditions:
-        if rec is None:
-            continue
-        rate = s["design_speed"] / s["length"]  # λ = λ' U/L [1/s]
+    for name, rec in yaw_conditions(s):
+        rate = rec.get("speed", s["design_speed"]) / s["length"]  # λ = λ' U/L [1/s]
         chk = guidelines.check_yaw(_straight_max_real(rec) * rate, name)
         detail = rec["verdict_text"]
         out.append(dict(chk.record(), detail=detail, key=f"yaw_{name}"))
@@ -153,8 +160,8 @@ def _findings(tow, s: dict, checks: list) -> list:
             out.append(
                 f"sea state {sp['sea_state']}: the tug cannot hold the tow ({sp['message']})"
             )
-    for name, rec in [("calm water", s.get("calm"))] + list(s.get("sea_states", {}).items()):
-        if rec and rec.get("outside_validity"):
+    for name, rec in yaw_conditions(s):
+        if rec.get("outside_validity"):
             out.append(
                 f"{name}: outside the model's validity ({', '.join(rec['outside_validity'])}); "
                 "see the validity section for what still holds"
