@@ -251,3 +251,27 @@ def test_no_advice_is_invented_for_a_hull_that_needs_skegs():
     advice = jt.studies.yaw_advice(jt.tow.load("barge2a").model(), "calm water")
     assert {a["parameter"] for a in advice} == {"l0", "xp", "u_tug", "EA"}
     assert all(a["value"] is None for a in advice)
+
+
+def test_outside_validity_the_verdict_is_repeated_under_the_bounds():
+    """Barge 2a at 2 m/s in Hs 5 m is faster than the waves' orbital velocity: the sea state
+    verdict is repeated with the zero-speed drift and the thesis's form, and says whether
+    it changes (sea states are off in the small study: run one here)."""
+    tow = jt.tow.load("barge2a")
+    from jaxtow.studies._assessment import _equilibria_record, _with_bounds
+
+    s = tow.sea_states[0]
+    rec = _with_bounds(tow, s, _equilibria_record(tow.sea_model(s)))
+    assert "no_separation" in rec["outside_validity"]
+    assert set(rec["bounds"]["verdicts"]) == {"stationary", "thesis"}
+    assert rec["bounds"]["changes"] == any(
+        v != rec["verdict"] for v in rec["bounds"]["verdicts"].values()
+    )
+    assert "Under the bounds that still hold" in rec["verdict_text"]
+
+
+def test_the_stationary_form_is_the_zero_speed_drift():
+    q = jt.tow.load("barge2a").drift()[0]
+    for u in (0.0, 2.0, 4.0):
+        F = jt.drift.sailing_drift(q, 0.8, 0.3, u, 0.1, 0.01, form="stationary")
+        np.testing.assert_array_equal(np.asarray(F), np.asarray(q(0.8, 0.3)))

@@ -15,7 +15,7 @@ from ._damping import aranha, damping_matrix, encounter_frequency, yaw_rate_damp
 from ._qtf import QTF
 
 #: The forward-speed forms of `sailing_drift`.
-FORMS = ("aranha", "linear", "thesis")
+FORMS = ("aranha", "linear", "thesis", "stationary")
 
 
 def check_form(form: str) -> str:
@@ -49,7 +49,10 @@ def sailing_drift(
       shift;
     * ``"thesis"``: the thesis's reading F(ω_e, β) + B(ω_e, β)·(u, v, r) (eq. 2.38 with the
       encounter frequency of eq. 5.1), which counts the encounter-frequency shift twice (the
-      ω ∂F/∂ω term of B is that shift); kept to reproduce the thesis.
+      ω ∂F/∂ω term of B is that shift); kept to reproduce the thesis;
+    * ``"stationary"``: the zero-speed drift F(ω, β), no speed correction and no damping: the
+      bound that holds where the forward-speed theory does not (a tow faster than the waves'
+      orbital velocity), used by the study to say whether a verdict depends on it.
 
     ``yaw_rate=False`` drops the yaw-rate column (it is zero anyway when the table has no
     sectional moments).
@@ -64,7 +67,9 @@ def sailing_drift(
     check_form(form)
     u, v, r = (jnp.asarray(x, float) for x in (u, v, r))
     omega0 = jnp.asarray(omega0, float)
-    if form == "thesis":
+    if form == "stationary":
+        F = q(omega0, beta)
+    elif form == "thesis":
         we = encounter_frequency(omega0, beta, u, v, g=g)
         B = damping_matrix(q, we, beta, g=g)
         if not yaw_rate:

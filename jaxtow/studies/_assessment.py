@@ -450,6 +450,37 @@ def _resistance(tow, seas, speeds, steps: Steps, res: TowStudy) -> dict:
     )
 
 
+#: The validity flags of the forward-speed drift theory: outside them, the verdict is also
+#: given under the bounds that still hold (`BOUND_FORMS`).
+SPEED_FLAGS = ("no_separation", "froude_ok", "tau_ok", "encounter_positive")
+#: The drift forms the verdict is repeated with where the forward-speed theory is outside its
+#: validity: the zero-speed drift (no speed correction) and the thesis's form (which counts
+#: the encounter-frequency shift twice: the largest speed effect of the three).
+BOUND_FORMS = {"stationary": "zero-speed drift", "thesis": "the thesis's form"}
+
+
+def _with_bounds(tow, s, rec: dict) -> dict:
+    """``rec`` with ``bounds`` (form → verdict key, and ``changes``: whether any differs from
+    the verdict) where a forward-speed validity flag fails."""
+    if not set(rec["outside_validity"]) & set(SPEED_FLAGS):
+        return rec
+    verdicts = {
+        form: _equilibria_record(tow.sea_model(s, form=form))["verdict"]
+        for form in BOUND_FORMS
+        if form != tow.form
+    }
+    rec["bounds"] = dict(
+        verdicts=verdicts, changes=any(v != rec["verdict"] for v in verdicts.values())
+    )
+    words = ", ".join(f"{BOUND_FORMS[f]}: {v}" for f, v in verdicts.items())
+    rec["verdict_text"] += f". Under the bounds that still hold ({words}) the verdict " + (
+        "CHANGES: it rests on the forward-speed theory"
+        if rec["bounds"]["changes"]
+        else "is the same"
+    )
+    return rec
+
+
 def _at_speed(model, speed: float) -> dict:
     """`_equilibria_record` of the model at tow speed ``speed`` [m/s], with the scales its
     non-dimensional numbers refer to."""
@@ -467,7 +498,7 @@ def _sea_state_record(tow, s, steps: Steps, operating_speed: float | None = None
     rec = steps.run(
         f"sea state {s.name}",
         f"equilibria and stability in sea state {s.name!r}",
-        lambda: _equilibria_record(tow.sea_model(s)),
+        lambda: _with_bounds(tow, s, _equilibria_record(tow.sea_model(s))),
     )
     if operating_speed is not None:
         rec["at_operating_speed"] = steps.run(

@@ -162,9 +162,16 @@ def _findings(tow, s: dict, checks: list) -> list:
             )
     for name, rec in yaw_conditions(s):
         if rec.get("outside_validity"):
+            b = rec.get("bounds")
+            held = (
+                "; under the bounds that still hold (zero-speed drift, the thesis's form) the "
+                + ("verdict CHANGES" if b["changes"] else "verdict is the same")
+                if b
+                else "; see the validity section for what still holds"
+            )
             out.append(
-                f"{name}: outside the model's validity ({', '.join(rec['outside_validity'])}); "
-                "see the validity section for what still holds"
+                f"{name}: outside the model's validity ({', '.join(rec['outside_validity'])})"
+                + held
             )
     for ch in checks:
         if ch["estimate"] and not ch["passed"]:

@@ -192,10 +192,11 @@ class Tow:
             assumed=self.assumed,
         )
 
-    def sea_model(self, sea, *, omega=None):
+    def sea_model(self, sea, *, omega=None, form: str | None = None):
         """The tow model in sea state ``sea``: mean irregular-sea drift (JONSWAP Hs, Tp, γ)
         and the wind, both from ahead of the course (the model's head-sea convention); the
-        directions of ``sea`` enter the resistance budget only."""
+        directions of ``sea`` enter the resistance budget only. ``form``: the forward-speed
+        form of the drift (default the tow file's; `jaxtow.drift.sailing_drift`)."""
 
         self._need_model()
         forces = []
@@ -206,7 +207,7 @@ class Tow:
                     spectrum=Jonswap(hs=sea.hs, tp=sea.tp, gamma=sea.gamma),
                     omega=DEFAULT_OMEGA if omega is None else omega,
                     scales=self.scales,
-                    form=self.form,
+                    form=self.form if form is None else form,
                 )
             )
         if float(sea.wind_speed) > 0:
