@@ -20,6 +20,7 @@ PUBLIC = [
     "jaxtow.design",
     "jaxtow.distributed",
     "jaxtow.lines",
+    "jaxtow.guidelines",
     "jaxtow.presets",
     "jaxtow.studies",
     "jaxtow.reports",

@@ -486,6 +486,7 @@ def _at_speed(model, speed: float) -> dict:
     non-dimensional numbers refer to."""
     model = at_tug_speed(model, speed)
     sc = model.reference_scales
+    assert sc is not None  # at_tug_speed needs (and keeps) the model's scales
     rec = _equilibria_record(model)
     rec.update(speed=speed, force_scale=float(sc.force), time_scale=sc.length / float(sc.u_tug))
     return rec
