@@ -420,7 +420,7 @@ def stable_value(
     lo: float,
     hi: float,
     *,
-    n: int = 33,
+    n: int = 17,
     margin: float = ADVICE_MARGIN,
 ) -> dict | None:
     """The value of parameter ``name`` in [lo, hi] nearest its present one at which the

@@ -294,20 +294,21 @@ def tow_study(
 
 
 def _advice(tow, summary: dict) -> list:
-    """`yaw_advice` for every condition whose yaw criterion fails (calm water, the sea
-    states at the design speed and at their operating speeds), in the order of the table."""
-    models = {"calm water": tow.model()}
-    for s in tow.sea_states:
-        models[f"sea state {s.name}"] = tow.sea_model(s)
-        rec = summary.get("sea_states", {}).get(s.name, {})
-        if "at_operating_speed" in rec:
-            u = rec["at_operating_speed"]["speed"]
-            models[f"sea state {s.name} at {u:.2f} m/s"] = at_tug_speed(tow.sea_model(s), u)
+    """`yaw_advice` for the calm water if its yaw criterion fails; else for every sea state at
+    the design speed whose criterion fails. (A tow that fishtails in calm water needs the
+    calm-water change first; a sea state at its operating speed gets none of its own: one
+    of the changes is the tow speed itself.)"""
+    failing = [
+        ch["key"][len("yaw_") :]
+        for ch in summary["assessment"]["checks"]
+        if ch["key"].startswith("yaw_") and not ch["passed"]
+    ]
+    if "calm water" in failing:
+        return yaw_advice(tow.model(), "calm water")
     out = []
-    for ch in summary["assessment"]["checks"]:
-        if ch["key"].startswith("yaw_") and not ch["passed"]:
-            condition = ch["key"][len("yaw_") :]
-            out += yaw_advice(models[condition], condition)
+    for s in tow.sea_states:
+        if f"sea state {s.name}" in failing:
+            out += yaw_advice(tow.sea_model(s), f"sea state {s.name}")
     return out
 
 
