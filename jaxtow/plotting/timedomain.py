@@ -6,15 +6,23 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 
-def plot_time_traces(traj: dict, title: str = ""):
-    """Sway offset y' [L] and heading ψ [deg] against time (thesis fig. 6.5)."""
-    fig, ax = plt.subplots(figsize=(7, 3.8))
-    ax.plot(traj["t"], traj["sway_offset"], color="tab:blue")
-    ax.set_xlabel("t' [-]  (time by L/U_tug)")
-    ax.set_ylabel("sway offset y' [L]", color="tab:blue")
-    ax2 = ax.twinx()
-    ax2.plot(traj["t"], np.degrees(traj["psi"]), color="k", lw=0.8)
-    ax2.set_ylabel("heading psi [deg]")
+def plot_time_traces(
+    traj: dict, title: str = "", *, length: float | None = None, time_scale: float | None = None
+):
+    """Sway offset and heading against time (thesis fig. 6.5), one panel each. With the
+    ship ``length`` [m] and the ``time_scale`` L/U [s], in metres and minutes; else in L and
+    t' = t U/L."""
+    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(10, 5.5), sharex=True)
+    dimensional = length is not None and time_scale is not None
+    t = np.asarray(traj["t"]) * (time_scale / 60.0 if dimensional else 1.0)
+    y = np.asarray(traj["sway_offset"]) * (length if dimensional else 1.0)
+    ax.plot(t, y, color="tab:blue", lw=0.9)
+    ax.set_ylabel("sway offset of the CoG [m]" if dimensional else "sway offset y' [L]")
+    ax2.plot(t, np.degrees(traj["psi"]), color="k", lw=0.9)
+    ax2.set_ylabel("heading [deg]")
+    ax2.set_xlabel("time [min]" if dimensional else "t' [-]  (time by L/U_tug)")
+    for a in (ax, ax2):
+        a.grid(alpha=0.3)
     ax.set_title(title, fontsize=9)
     return fig
 

@@ -4,6 +4,7 @@ sea state, the stability map around the design point and the time-domain check."
 from __future__ import annotations
 
 import io
+import textwrap
 
 import matplotlib.pyplot as plt
 import numpy as np
@@ -46,7 +47,7 @@ def _drift_figure(s: dict, w, fx):
     )
     ax.set_xlabel("wave frequency omega [rad/s]")
     ax.set_ylabel("mean drift [kN/m^2]")
-    ax.set_title(f"{s['tow']}: {s['drift_source'][:90]}", fontsize=8)
+    ax.set_title("\n".join(textwrap.wrap(f"{s['tow']}: {s['drift_source']}", 90)[:3]), fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     return fig
@@ -87,8 +88,10 @@ def _map_figure(s: dict, ds):
 def _time_domain_figure(s: dict, traj, met):
     return plot_time_traces(
         traj,
-        f"{s['tow']}: calm water from psi0 = {s['time_domain']['psi0_deg']:g} deg, "
-        f"y0' = {s['time_domain']['y0']:g} ({met['outcome']})",
+        f"{s['tow']}: calm water from heading {s['time_domain']['psi0_deg']:g} deg and sway "
+        f"offset {s['time_domain']['y0'] * s['length']:.1f} m ({met['outcome']})",
+        length=s["length"],
+        time_scale=s["time_scale"],
     )
 
 
