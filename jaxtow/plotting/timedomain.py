@@ -14,8 +14,10 @@ def plot_time_traces(
     t' = t U/L."""
     fig, (ax, ax2) = plt.subplots(2, 1, figsize=(10, 5.5), sharex=True)
     dimensional = length is not None and time_scale is not None
-    t = np.asarray(traj["t"]) * (time_scale / 60.0 if dimensional else 1.0)
-    y = np.asarray(traj["sway_offset"]) * (length if dimensional else 1.0)
+    t = np.asarray(traj["t"]) * (time_scale / 60.0 if time_scale is not None else 1.0)
+    y = np.asarray(traj["sway_offset"]) * (length if length is not None else 1.0)
+    if not dimensional:  # both or neither
+        t, y = np.asarray(traj["t"]), np.asarray(traj["sway_offset"])
     ax.plot(t, y, color="tab:blue", lw=0.9)
     ax.set_ylabel("sway offset of the CoG [m]" if dimensional else "sway offset y' [L]")
     ax2.plot(t, np.degrees(traj["psi"]), color="k", lw=0.9)
