@@ -109,13 +109,12 @@ def _advice(s: dict) -> list:
     rows = []
     for a in s.get("advice", []):
         if a["value"] is None:
-            lo, hi = a["searched"]
             rows.append(
                 [
                     a["condition"],
                     a["what"],
                     a["present_text"],
-                    f"none in [{lo:.3g}, {hi:.3g}]",
+                    f"no value from {a['searched_text']} makes it follow",
                     "-",
                     "-",
                 ]

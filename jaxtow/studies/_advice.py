@@ -74,6 +74,7 @@ def yaw_advice(model, condition: str) -> list[dict]:
             present=p,
             present_text=_in_units(name, p, scales),
             searched=[lo, hi],
+            searched_text=f"{_in_units(name, lo, scales)} to {_in_units(name, hi, scales)}",
             value=None,
         )
         if found is not None:
