@@ -73,8 +73,9 @@ class Criteria:
 
 
 _WEATHER = (
-    "the unrestricted-towage weather criterion as the guideline states it (wind 20 m/s, "
-    "Hs 5 m, current 0.5 m/s acting together)"
+    "the unrestricted-towage weather criterion the guidelines are cited for (wind 20 m/s, "
+    "Hs 5 m, current 0.5 m/s acting together; the text itself was not available to this "
+    "project: docs/guidelines.md)"
 )
 _SHARED = {
     "wind_speed": _WEATHER,
@@ -83,10 +84,11 @@ _SHARED = {
     "tug_efficiency": "estimate: 0.75, the usual offshore towing efficiency; the guideline's "
     "table of efficiency against bollard pull and Hs was not available to this project: set "
     "it in [criteria] from the edition in use",
-    "mbl_breaks": "main towline MBL for unrestricted towages: 3.0 BP up to 40 t, (3.8 - "
-    "BP/50) BP from 40 to 90 t, 2.0 BP above 90 t",
+    "mbl_breaks": "main towline MBL for unrestricted towages as the guideline is cited for: "
+    "3.0 BP up to 40 t, (3.8 - BP/50) BP from 40 to 90 t, 2.0 BP above 90 t",
     "mbl_factors": "as mbl_breaks",
-    "length_factor": "minimum main towline length 1800 BP/MBL metres",
+    "length_factor": "minimum main towline length 1800 BP/MBL metres, as the guideline is "
+    "cited for",
     "connection_ratio": "estimate: connecting parts (bridle legs, pennant, shackles) not "
     "weaker than the towline; check the edition in use for its own ratio",
     "seabed_clearance": "the static catenary must clear the seabed (a physical limit; set a "
