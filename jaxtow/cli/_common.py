@@ -98,6 +98,16 @@ def tow_model(args, tow_name=None, overrides=None, command: str = ""):
 EA_MIN_N = 1e3
 
 
+def check_ea_newtons(EA: float, command: str = "") -> None:
+    """Refuse an ``--EA`` below `EA_MIN_N`: the non-dimensional EA' given to the N flag."""
+    if EA < EA_MIN_N:
+        raise SystemExit(
+            f"{'jaxtow ' + command + ': ' if command else ''}error: argument --EA: the axial "
+            f"stiffness in N (the tow file's unit), got {EA:g}; for the non-dimensional EA' "
+            "use --EA-nd"
+        )
+
+
 def ea_nondimensional(args, scales):
     """EA' from ``--EA`` [N] (the tow file's unit: EA' = EA/(½ρTLU²) with the model's
     scales) or ``--EA-nd``; None when neither is given."""
@@ -106,11 +116,7 @@ def ea_nondimensional(args, scales):
         raise SystemExit("error: give --EA (in N) or --EA-nd (non-dimensional), not both")
     if EA is None:
         return EA_nd
-    if EA < EA_MIN_N:
-        raise SystemExit(
-            f"error: argument --EA: the axial stiffness in N (the tow file's unit), got {EA:g}; "
-            "for the non-dimensional EA' use --EA-nd"
-        )
+    check_ea_newtons(EA)
     if scales is None:
         raise SystemExit("error: argument --EA: the model has no scales to convert N; use --EA-nd")
     return EA / float(scales.force)

@@ -11,7 +11,7 @@ from pathlib import Path
 import jaxtow as jt
 
 from ..io._atomic import write_file
-from ._common import EA_MIN_N, finite_float, positive_float
+from ._common import check_ea_newtons, finite_float, positive_float
 from .tow import load_tow
 
 
@@ -27,11 +27,8 @@ def _tow(args):
     if args.tow_positional and args.tow_flag and args.tow_positional != args.tow_flag:
         raise SystemExit("jaxtow study: error: give the tow once (TOW or --tow TOW)")
     tow = load_tow(args.tow_positional or args.tow_flag or "barge2a", "study")
-    if args.EA is not None and args.EA < EA_MIN_N:
-        raise SystemExit(
-            f"jaxtow study: error: argument --EA: the axial stiffness in N (the tow file's "
-            f"unit), got {args.EA:g}; for the non-dimensional EA' use --EA-nd"
-        )
+    if args.EA is not None:
+        check_ea_newtons(args.EA, "study")
     changes = {
         key: getattr(args, attr)
         for attr, key in (

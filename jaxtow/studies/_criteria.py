@@ -7,14 +7,12 @@ from __future__ import annotations
 
 import math
 
-import jax
-import jax.numpy as jnp
 import numpy as np
 
 from .. import guidelines, resistance
 from ..guidelines import TONNE, Check
 from ..resistance import SeaState
-from ..waves import physical_tp_range
+from ._resistance import worst_over_tp
 
 __all__ = ["assessment"]
 
@@ -30,31 +28,16 @@ def weather_pull(tow, c: guidelines.Criteria, n_tp: int = 41) -> tuple[float, fl
     """(towing force [N], worst Tp [s]) to hold the tow at zero speed in the weather
     criterion, the worst over the physical Tp range of its Hs (thesis eq. 3.5)."""
     tr = tow.resistance()
+    sea = SeaState(
+        name="criterion",
+        hs=c.hs,
+        tp=10.0,  # the worst over the physical range replaces it where Hs > 0
+        wind_speed=c.wind_speed,
+        current_speed=c.current_speed,
+    )
     if c.hs <= 0:
-        sea = SeaState(
-            name="criterion",
-            hs=0.0,
-            tp=10.0,
-            wind_speed=c.wind_speed,
-            current_speed=c.current_speed,
-        )
         return float(resistance.required_pull(tr, sea).towing_force), math.nan
-    lo, hi = (float(t) for t in physical_tp_range(c.hs))
-    tps = jnp.linspace(lo, hi, n_tp)
-
-    def force(tp):
-        sea = SeaState(
-            name="criterion",
-            hs=c.hs,
-            tp=tp,
-            wind_speed=c.wind_speed,
-            current_speed=c.current_speed,
-        )
-        return resistance.required_pull(tr, sea).towing_force
-
-    F = jax.vmap(force)(tps)
-    k = int(jnp.argmax(F))
-    return float(F[k]), float(tps[k])
+    return worst_over_tp(tr, sea, n_tp=n_tp)
 
 
 def _pull_checks(tow, s: dict, c: guidelines.Criteria) -> tuple[list, list]:

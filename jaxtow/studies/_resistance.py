@@ -33,18 +33,11 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
         required_bollard_pull=float(req.bollard_pull),
     )
     if float(sea.hs) > 0:
-        lo, hi = (float(t) for t in physical_tp_range(float(sea.hs)))
-        tps = jnp.linspace(lo, hi, n_tp)
-        bp = jax.vmap(
-            lambda t: (
-                resistance.required_pull(tow, eqx_tp(sea, t), heading=heading, tug=tug).bollard_pull
-            )
-        )(tps)
-        k = int(jnp.argmax(bp))
+        bp, tp = worst_over_tp(tow, sea, heading=heading, tug=tug, n_tp=n_tp)
         out.update(
-            physical_tp_range=[lo, hi],
-            worst_tp=float(tps[k]),
-            worst_required_bollard_pull=float(bp[k]),
+            physical_tp_range=[float(t) for t in physical_tp_range(float(sea.hs))],
+            worst_tp=tp,
+            worst_required_bollard_pull=bp,
         )
     p = resistance.operating_speed(tow, tug, sea, heading=heading, throw=False)
     msg = resistance.status_message(p, tug, tow)
@@ -68,6 +61,21 @@ def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
         if route_length:
             out["transit_time_h"] = float(p.transit_time(route_length)) / 3600.0
     return out
+
+
+def worst_over_tp(tow, sea, *, heading=0.0, tug=None, n_tp: int = 41) -> tuple[float, float]:
+    """(required bollard pull [N], the Tp [s] it needs) at zero speed, the worst over the
+    physical Tp range of the sea state's Hs (thesis eq. 3.5), in one vmapped call; without a
+    ``tug`` the pull is the towing force."""
+    lo, hi = (float(t) for t in physical_tp_range(float(sea.hs)))
+    tps = jnp.linspace(lo, hi, n_tp)
+    bp = jax.vmap(
+        lambda t: (
+            resistance.required_pull(tow, eqx_tp(sea, t), heading=heading, tug=tug).bollard_pull
+        )
+    )(tps)
+    k = int(jnp.argmax(bp))
+    return float(bp[k]), float(tps[k])
 
 
 def eqx_tp(sea, tp):
