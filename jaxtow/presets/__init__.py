@@ -36,7 +36,7 @@ these presets carries the list in ``Vessel.assumed`` and every dataset in its at
   i.e. a waterline flare η = 47.7° at the bow and stern faces (`barge2_rake`).
 
 Modules: `_values` (the thesis's Barge 2 data and every documented estimate, `ASSUMPTIONS`),
-`_particulars` (a vessel from L, B, T, C_B by published regressions), `_barge2` (the
+`_particulars` (a vessel from L, B, T, C_B by published regressions, and its skegs), `_barge2` (the
 built-in vessels, waterlines, towline, resistance model, sea states and tug),
 `_databases` (the shipped panel-method drift databases and `drift_source`, the one way to
 name a drift source), `_tows` (the Barge 2 tow models of the thesis's wave studies).
@@ -82,12 +82,15 @@ if TYPE_CHECKING:
     from ._particulars import (
         CLARKE_LB_RANGE as CLARKE_LB_RANGE,
         REGRESSIONS as REGRESSIONS,
+        Skegs as Skegs,
         block_coefficient_from_mass as block_coefficient_from_mass,
         clarke_added_mass as clarke_added_mass,
         clarke_linear_derivatives as clarke_linear_derivatives,
+        helmbold_lift_slope as helmbold_lift_slope,
         kijima_linear_derivatives as kijima_linear_derivatives,
         particulars_derivatives as particulars_derivatives,
         radii_of_gyration as radii_of_gyration,
+        skeg_derivatives as skeg_derivatives,
         vessel_from_particulars as vessel_from_particulars,
     )
     from ._tows import (
@@ -122,6 +125,9 @@ __all__ = [
     "REGRESSIONS",
     "particulars_derivatives",
     "vessel_from_particulars",
+    "Skegs",
+    "skeg_derivatives",
+    "helmbold_lift_slope",
     "radii_of_gyration",
     "barge2_scales",
     "barge2_rake",

@@ -1,10 +1,12 @@
 """A vessel from its particulars (L, B, T, C_B): the published linear regressions of Clarke,
 Gedling & Hine (1983) and Kijima et al. (1990), the Clarke added masses, the borrowed
-nonlinear terms of Barge 2a, and the radii of gyration of the documented estimate."""
+nonlinear terms of Barge 2a, the radii of gyration of the documented estimate, and skegs as
+low-aspect-ratio lifting surfaces (`skeg_derivatives`)."""
 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from .._vessel import Vessel
 from ._values import _TABLE_3_7, ASSUMPTIONS
@@ -88,6 +90,90 @@ def kijima_linear_derivatives(
     )
 
 
+def helmbold_lift_slope(aspect_ratio: float) -> float:
+    """dC_L/dα [1/rad] of a thin unswept wing of (effective) aspect ratio Λ, Helmbold's
+    equation (1942), 2πΛ / (2 + √(Λ² + 4)): it tends to Jones's slender-wing value πΛ/2 as
+    Λ → 0 (a barge skeg's range) and to the 2-D 2π as Λ → ∞."""
+    a = float(aspect_ratio)
+    if not (math.isfinite(a) and a > 0):
+        raise ValueError(f"aspect_ratio must be > 0 and finite, got {aspect_ratio!r}")
+    return 2.0 * math.pi * a / (2.0 + math.sqrt(a * a + 4.0))
+
+
+@dataclass(frozen=True)
+class Skegs:
+    """Identical skegs under the stern, each a thin plate in the hull's centre-plane
+    direction (the tow file's ``[vessel.skegs]``), in metres:
+
+    * ``count``: how many (1 centre skeg, 2 twin skegs, ...);
+    * ``span``: the greatest depth of one skeg, from the hull bottom it hangs from down to its
+      lower edge;
+    * ``chord``: its length along the hull;
+    * ``area``: its lateral area (None: span × chord, a rectangle; a skeg filling a
+      raked stern is a triangle, ½ span × chord);
+    * ``x``: where its force acts, from midships, + forward (None: the middle of a skeg
+      whose aft end is at the stern, −L/2 + chord/2).
+
+    Twin skegs are counted each on its own: the formulation neglects their interference
+    (Inoue, Kijima & Doi measured that it grows as skegs come closer together)."""
+
+    count: int = 2
+    span: float = 0.0
+    chord: float = 0.0
+    area: float | None = None
+    x: float | None = None
+
+    def __post_init__(self):
+        if isinstance(self.count, bool) or int(self.count) != self.count or self.count < 1:
+            raise ValueError(f"skegs count must be a whole number >= 1, got {self.count!r}")
+        for name in ("span", "chord") + (("area",) if self.area is not None else ()):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise ValueError(f"skegs {name} must be > 0 and finite [m], got {v!r}")
+        if self.x is not None and not math.isfinite(self.x):
+            raise ValueError(f"skegs x must be finite [m], got {self.x!r}")
+
+    @property
+    def lateral_area(self) -> float:
+        """The lateral area of one skeg [m²]."""
+        return float(self.area) if self.area is not None else self.span * self.chord
+
+    @property
+    def aspect_ratio(self) -> float:
+        """The effective aspect ratio 2 span²/area: the hull bottom the skeg hangs from acts as
+        a reflection plane, doubling the geometric span²/area (Journée & Massie, Offshore
+        Hydromechanics, on rudders under a hull)."""
+        return 2.0 * self.span**2 / self.lateral_area
+
+
+def skeg_derivatives(length: float, draft: float, skegs: Skegs) -> dict:
+    """The skegs' contribution to Y_v', Y_r', N_v', N_r' in the Hong et al. scales of
+    `jaxtow.Vessel` (½ρLTU, ½ρL²TU, ½ρL³TU), from quasi-steady lifting-surface theory:
+
+    each skeg sees the local drift angle of its centre of pressure, −(v + r x)/U, and gives
+    the side force ½ρ A U² C_Lα (its lift, `helmbold_lift_slope` of the effective aspect
+    ratio `Skegs.aspect_ratio`), so with k = n A C_Lα / (L T) and ξ = x/L:
+
+    ΔY_v' = −k,  ΔY_r' = ΔN_v' = −k ξ,  ΔN_r' = −k ξ².
+
+    A stern skeg (ξ < 0) adds sway damping, a stabilising N_v' and yaw damping, as model
+    tests of barges with skegs show. The formulation leaves out the skeg's interaction with
+    the hull (the cross-flow a skeg stops at the stern bilge, the hull's wake and the
+    straightening of the flow): docs/estimates.md compares it with Barge 2a/2b. Returns the
+    four increments and ``lift_slope``, ``aspect_ratio``, ``x`` [m]."""
+    L, T = float(length), float(draft)
+    x = float(skegs.x) if skegs.x is not None else -0.5 * L + 0.5 * skegs.chord
+    if not -0.5 * L <= x <= 0.5 * L:
+        raise ValueError(f"skegs x must lie along the hull, within ±L/2 = ±{L / 2:g} m; got {x:g}")
+    lam = skegs.aspect_ratio
+    cla = helmbold_lift_slope(lam)
+    k = skegs.count * skegs.lateral_area * cla / (L * T)
+    xi = x / L
+    return dict(
+        Yv=-k, Yr=-k * xi, Nv=-k * xi, Nr=-k * xi * xi, lift_slope=cla, aspect_ratio=lam, x=x
+    )
+
+
 #: The linear regressions a vessel from particulars can use (the tow file's
 #: ``[vessel] regression``).
 REGRESSIONS = ("clarke", "kijima")
@@ -103,6 +189,7 @@ def particulars_derivatives(
     draft: float,
     block_coefficient: float,
     regression: str = "clarke",
+    skegs: Skegs | None = None,
 ) -> tuple[dict, dict]:
     """Every `jaxtow.Vessel` parameter of a hull known by its particulars, and a note on
     each estimate: (values, notes).
@@ -111,6 +198,7 @@ def particulars_derivatives(
     * Izz' = m' (k_zz/L)² with k_zz from `ASSUMPTIONS['radii_of_gyration']`;
     * the linear Y_v', Y_r', N_v', N_r' from ``regression`` (`clarke_linear_derivatives` or
       `kijima_linear_derivatives`);
+    * with ``skegs``, their `skeg_derivatives` added to the four linear derivatives;
     * a11', a22', a66' from `clarke_added_mass`;
     * R0', X_vv', X_rr', Y_vvv', Y_rrr', N_vvv' borrowed from Barge 2a (thesis Table 3.7):
       the only barge whose nonlinear terms are published here. A cross-flow drag estimate
@@ -155,6 +243,16 @@ def particulars_derivatives(
             f"{src} linear regression with C_B = {cb:g} (no appendages: skegs are not "
             f"seen){where}; estimate"
         )
+    if skegs is not None:
+        add = skeg_derivatives(L, T, skegs)
+        for k in lin:
+            vals[k] += add[k]
+            notes[k] = (
+                f"{src} linear regression with C_B = {cb:g}{where}, plus {skegs.count} "
+                f"skeg(s) as lifting surfaces ({k}' {add[k]:+.4f}: Helmbold lift slope "
+                f"{add['lift_slope']:.3f}/rad at effective aspect ratio "
+                f"{add['aspect_ratio']:.2f}, acting at x = {add['x']:g} m); estimate"
+            )
     for k in _BORROWED:
         vals[k] = _TABLE_3_7["2a"][k]
         notes[k] = (
@@ -171,10 +269,13 @@ def vessel_from_particulars(
     block_coefficient: float,
     regression: str = "clarke",
     name: str = "vessel from particulars",
+    skegs: Skegs | None = None,
 ) -> Vessel:
     """A `jaxtow.Vessel` with every parameter from `particulars_derivatives`; its
     ``assumed`` lists each estimate. Use it with `Scales(length, draft, u_tug)`."""
-    vals, notes = particulars_derivatives(length, breadth, draft, block_coefficient, regression)
+    vals, notes = particulars_derivatives(
+        length, breadth, draft, block_coefficient, regression, skegs=skegs
+    )
     return Vessel(**vals, name=name, assumed=tuple(notes.items()))
 
 

@@ -18,7 +18,16 @@ import msgspec
 import tomli_w
 from msgspec import UNSET, Meta, UnsetType
 
-__all__ = ["TowFileError", "TowFileWarning", "Key", "SCHEMA", "ARRAYS", "locate", "to_toml"]
+__all__ = [
+    "TowFileError",
+    "TowFileWarning",
+    "Key",
+    "SCHEMA",
+    "SUBTABLES",
+    "ARRAYS",
+    "locate",
+    "to_toml",
+]
 
 
 class TowFileError(ValueError):
@@ -78,7 +87,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
         block_coefficient=Key(
             "float",
             "C_B: estimates the linear derivatives Yv, Yr, Nv, Nr that [vessel.derivatives] "
-            "leaves out (the regression's; no appendages, so no skegs)",
+            "leaves out (the regression's; no appendages: add skegs with [vessel.skegs])",
             "-",
             "unit",
         ),
@@ -87,6 +96,11 @@ SCHEMA: dict[str, dict[str, Key]] = {
             "clarke | kijima: the linear regression for the derivatives left out; given "
             "without [vessel.derivatives], every parameter is estimated from L, B, T and C_B "
             "(jaxtow.presets.particulars_derivatives)",
+        ),
+        skegs=Key(
+            "table",
+            "skegs added to the regression's linear derivatives (a vessel with "
+            "block_coefficient): the keys of [vessel.skegs] below",
         ),
         derivatives=Key(
             "table",
@@ -237,6 +251,34 @@ SCHEMA: dict[str, dict[str, Key]] = {
         sea_states=Key("bool", "equilibria and stability in each sea state", default=True),
         speeds=Key(
             "grid", "tow speeds of the resistance table [lo, hi, n]", "m/s", default=[0.0, 3.5, 15]
+        ),
+    ),
+}
+
+#: Sub-tables with keys of their own: [vessel.skegs] (`jaxtow.presets.Skegs`).
+SUBTABLES: dict[str, dict[str, Key]] = {
+    "vessel.skegs": _keys(
+        count=Key("int", "how many identical skegs (2: twin skegs)", "-", "positive", 2),
+        span=Key(
+            "float",
+            "greatest depth of one skeg below the hull bottom it hangs from",
+            "m",
+            "positive",
+        ),
+        chord=Key("float", "length of one skeg along the hull", "m", "positive"),
+        area=Key(
+            "float",
+            "lateral area of one skeg (default span x chord; a skeg filling a raked stern: "
+            "span x chord / 2)",
+            "m2",
+            "positive",
+        ),
+        x=Key(
+            "float",
+            "where the skeg's force acts, from midships, + forward (default: the middle of "
+            "a skeg ending at the stern, -L/2 + chord/2)",
+            "m",
+            "finite",
         ),
     ),
 }
@@ -447,7 +489,7 @@ class Problems:
 def schema_markdown() -> str:
     """The key tables of docs/towfile.md, made from `SCHEMA` (a test keeps the page equal)."""
     out = []
-    for sec, keys in SCHEMA.items():
+    for sec, keys in {**SCHEMA, **SUBTABLES}.items():
         head = f"[[{sec}]]" if sec in ARRAYS else f"[{sec}]"
         out += [
             f"### `{head}`",

@@ -44,6 +44,7 @@ from ._schema import (
     ARRAYS,
     REQUIRED,
     SCHEMA,
+    SUBTABLES,
     Invalid,
     Key,
     Problems,
@@ -404,12 +405,13 @@ def _vessel(p: Problems, v: dict, name: str, assumed: list) -> Vessel | None:
     if regression is not None and "block_coefficient" not in v:
         p.error(("vessel", "block_coefficient"), "missing key: a regression needs C_B")
     d = v.get("derivatives", {} if regression is not None else None)
+    skegs = _skegs(p, v, d)
     if d is None:
         return None
     _check_derivatives(p, d)
     notes: list = []
     if "block_coefficient" in v:
-        d, notes = _fill_from_particulars(v, d, regression)
+        d, notes = _fill_from_particulars(v, d, regression, skegs)
     missing = [k for k in _DERIVATIVES if k not in d]
     if missing:
         p.error(("vessel", "derivatives"), f"missing derivative(s) {', '.join(missing)}")
@@ -431,6 +433,12 @@ def _preset_vessel(p: Problems, v: dict, assumed: list) -> Vessel:
         )
     if "derivatives" in v:
         p.error(("vessel", "derivatives"), "give either preset or derivatives, not both")
+    if "skegs" in v:
+        p.error(
+            ("vessel", "skegs"),
+            "a preset's derivatives are measured with its appendages (barge_2b has skegs); "
+            "skegs add to a regression's estimates only",
+        )
     for k, val in (("length", presets.BARGE2_LENGTH), ("breadth", presets.BARGE2_BREADTH)):
         if k in v and v[k] != val:
             p.error(
@@ -458,11 +466,66 @@ def _check_derivatives(p: Problems, d) -> None:
             p.error(("vessel", "derivatives", k), f"expected a finite number, got {val!r}")
 
 
-def _fill_from_particulars(v: dict, d: dict, regression) -> tuple[dict, list]:
+def _skegs(p: Problems, v: dict, d: dict | None):
+    """[vessel.skegs]: a `presets.Skegs` added to the regression's linear derivatives (None:
+    no skegs). Refused where no regression estimates them, or where a linear derivative is
+    given (a measured value already holds the hull's appendages)."""
+    if "skegs" not in v:
+        return None
+    path = ("vessel", "skegs")
+    table = v["skegs"]
+    if not isinstance(table, dict):
+        p.error(path, "expected a table [vessel.skegs] with span, chord (and count, area, x)")
+    keys = SUBTABLES["vessel.skegs"]
+    for k in table:
+        if k not in keys:
+            p.error(path + (k,), f"unknown key (keys of [vessel.skegs]: {', '.join(keys)})")
+    try:
+        out = check_section("vessel.skegs", table, keys)
+    except Invalid as e:
+        p.error(path + ((e.key,) if e.key else ()), str(e))
+    for k in ("span", "chord"):
+        if k not in out:
+            p.error(path + (k,), "missing key: skegs need their span and chord")
+    if "block_coefficient" not in v:
+        p.error(
+            path,
+            "skegs add to the linear derivatives a regression estimates: give "
+            "[vessel] block_coefficient (and regression), not measured Yv, Yr, Nv, Nr",
+        )
+    if d is None:
+        p.error(
+            path,
+            "skegs change the manoeuvring derivatives, and this vessel has none: name a "
+            "[vessel] regression or give [vessel.derivatives]",
+        )
+    given = [k for k in ("Yv", "Yr", "Nv", "Nr") if k in d]
+    if given:
+        p.error(
+            ("vessel", "derivatives", given[0]),
+            "a given linear derivative already holds the hull's appendages; with "
+            "[vessel.skegs] leave Yv, Yr, Nv, Nr to the regression",
+        )
+    out.setdefault("count", keys["count"].default)
+    v["skegs"] = out
+    try:
+        skegs = presets.Skegs(**out)
+        presets.skeg_derivatives(v["length"], v["draft"], skegs)
+    except ValueError as e:
+        p.error(path, str(e))
+    return skegs
+
+
+def _fill_from_particulars(v: dict, d: dict, regression, skegs=None) -> tuple[dict, list]:
     """The derivatives not given, estimated from the particulars: every one with a
     regression named; with none named only the linear ones (Clarke), the rest must be given."""
     est, est_notes = presets.particulars_derivatives(
-        v["length"], v["breadth"], v["draft"], v["block_coefficient"], regression or "clarke"
+        v["length"],
+        v["breadth"],
+        v["draft"],
+        v["block_coefficient"],
+        regression or "clarke",
+        skegs=skegs,
     )
     fill = [k for k in _DERIVATIVES + _ADDED if k not in d]
     if regression is None:
