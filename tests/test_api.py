@@ -16,6 +16,7 @@ PUBLIC = [
     "jaxtow.drift",
     "jaxtow.waves",
     "jaxtow.resistance",
+    "jaxtow.strip",
     "jaxtow.continuation",
     "jaxtow.design",
     "jaxtow.distributed",

@@ -1,0 +1,22 @@
+"""Strip theory in JAX: section coefficients by Frank's close-fit source method (with an
+interior lid against irregular frequencies), differentiable in the hull offsets.
+
+Numerics only (no plotting, no files). Modules: `_expint` (the complex exponential integral
+of the wave source, with its own derivative rule), `_sections` (the 2-D radiation and
+diffraction of a section, `section_coefficients`).
+"""
+
+from typing import TYPE_CHECKING
+
+from .._lazy import attach as _attach
+
+if TYPE_CHECKING:
+    from ._sections import (
+        LID_FRACTION as LID_FRACTION,
+        SectionCoefficients as SectionCoefficients,
+        section_coefficients as section_coefficients,
+    )
+
+__all__ = ["section_coefficients", "SectionCoefficients", "LID_FRACTION"]
+
+__getattr__, __dir__ = _attach(__name__, __file__)
