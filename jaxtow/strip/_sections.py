@@ -85,13 +85,6 @@ def _panels(y, z):
     return a, b, mid, length, e, normal
 
 
-def _lid(beam_half, n):
-    """Panels on the interior waterline from x = B/2 to 0 (the half lid)."""
-    x = jnp.linspace(beam_half, 0.0, n + 1)
-    a, b = x[:-1] + 0j, x[1:] + 0j
-    return a, b
-
-
 def _rankine(z, a, b):
     """∫ ln|z − ζ| ds over the panel a → b, and the complex velocity d/dz of the analytic
     function it is the real part of (= ∫ ds/(z − ζ)); z must not lie on the panel."""
@@ -109,39 +102,43 @@ def _rankine(z, a, b):
     return pot, vel
 
 
-def _wave(z, a, b, nu):
-    """The wave part of a panel's source over the image panel ā → b̄: ∫ [2 f(w) − 2πi e^{−w}]
-    ds (real part in space: the potential's two time components) and its z-derivatives."""
-    ai, bi = jnp.conj(a), jnp.conj(b)
-    length = jnp.abs(bi - ai)
-    e = (bi - ai) / length
-    wa, wb = 1j * nu * (z - ai), 1j * nu * (z - bi)
-    fa, fb = exp_ei(wa), exp_ei(wb)
-    # ∫ f(w) ds with w = iν(z − ζ'), dw = −iν e ds:  ∫ f ds = −(1/(iνe)) [Ln w − f]_a^b
-    q = lambda w, f: jnp.log(w) - f  # noqa: E731
-    int_f = -(q(wb, fb) - q(wa, fa)) / (1j * nu * e)
-    int_e = -(jnp.exp(-wb) - jnp.exp(-wa)) / (-1j * nu * e)  # ∫ e^{−w} ds
-    # d/dz: d/dz ∫ f ds = ∫ iν f'(w) ds = −(1/e) [f]_a^b;  d/dz ∫ e^{−w} ds = −(1/e)[e^{−w}]
-    d_f = -(fb - fa) / e
-    d_e = -(jnp.exp(-wb) - jnp.exp(-wa)) / e
+def _wave(z, verts, nu):
+    """The wave part of the sources on the polyline ``verts`` (panels between neighbours),
+    over the image panels: ∫ [2 f(w) − 2πi e^{−w}] ds, real in space for the potential's two
+    time components, and the z-derivatives. Each panel end's exponential integral is
+    evaluated once and shared by the two panels that meet there.
+
+    Returns (∫f ds, ∫e^{−w} ds, d/dz ∫f ds, d/dz ∫e^{−w} ds), each (points, panels)."""
+    img = jnp.conj(verts)
+    length = jnp.abs(img[1:] - img[:-1])
+    e = (img[1:] - img[:-1]) / length
+    w = 1j * nu * (z[..., None] - img)
+    f = exp_ei(w)
+    q = jnp.log(w) - f  # an antiderivative of f: d/dw (Ln w − f) = f
+    ex = jnp.exp(-w)
+    # w = iν(z − ζ'), dw = −iν e ds:  ∫ f ds = −(1/(iνe)) [Ln w − f],  ∫ e^{−w} ds likewise
+    int_f = -(q[..., 1:] - q[..., :-1]) / (1j * nu * e)
+    int_e = (ex[..., 1:] - ex[..., :-1]) / (1j * nu * e)
+    # d/dz ∫ f ds = ∫ iν f'(w) ds = −(1/e) [f];  d/dz ∫ e^{−w} ds = −(1/e) [e^{−w}]
+    d_f = -(f[..., 1:] - f[..., :-1]) / e
+    d_e = -(ex[..., 1:] - ex[..., :-1]) / e
     return int_f, int_e, d_f, d_e
 
 
-def _influence(z, normal, a, b, nu, self_mask):
-    """Potential and normal velocity at points z (normals ``normal``; None for the lid)
-    of unit sources on panels a → b, with the panel's image and wave terms; complex in time.
+def _influence(z, normal, verts, nu, self_mask):
+    """Potential and normal velocity at points z (unit normals ``normal``) of unit sources
+    on the panels of the polyline ``verts``, with their images and wave terms; complex in
+    time; ``self_mask`` marks each point's own panel (its jump is taken on the fluid side).
 
     Returns (pot, dn), each (points, panels)."""
     zz = z[:, None]
-    pot_r, vel_r = _rankine(zz, a[None, :], b[None, :])
-    pot_i, vel_i = _rankine(zz, jnp.conj(a)[None, :], jnp.conj(b)[None, :])
-    int_f, int_e, d_f, d_e = _wave(zz, a[None, :], b[None, :], nu)
+    a, b = verts[None, :-1], verts[None, 1:]
+    pot_r, vel_r = _rankine(zz, a, b)
+    pot_i, vel_i = _rankine(zz, jnp.conj(a), jnp.conj(b))
+    int_f, int_e, d_f, d_e = _wave(z, verts, nu)
     pot = (pot_r - pot_i + 2.0 * jnp.real(int_f)) - 2j * jnp.pi * jnp.real(int_e)
-    if normal is None:
-        return pot, None
     n = normal[:, None]
-    dn_r = jnp.real(vel_r * n)
-    dn_r = jnp.where(self_mask, jnp.pi, dn_r)  # the panel's own jump, fluid side
+    dn_r = jnp.where(self_mask, jnp.pi, jnp.real(vel_r * n))
     dn = (dn_r - jnp.real(vel_i * n) + 2.0 * jnp.real(d_f * n)) - 2j * jnp.pi * jnp.real(d_e * n)
     return pot, dn
 
@@ -149,25 +146,30 @@ def _influence(z, normal, a, b, nu, self_mask):
 def _systems(y, z, nu, n_lid):
     """The symmetric and antisymmetric influence systems (body rows: normal velocity; lid
     rows: vertical velocity just below the lid) and the potential on the body panels."""
-    a, b, mid, _, _, normal = _panels(y, z)
+    _, _, mid, _, _, normal = _panels(y, z)
     n_body = mid.shape[0]
-    la, lb = _lid(y[0], n_lid)
-    lmid = 0.5 * (la + lb)
-    # sources: body panels and lid panels; mirror images across x = 0 for the other half
-    sa = jnp.concatenate([a, la])
-    sb = jnp.concatenate([b, lb])
-    ma, mb = -jnp.conj(sa), -jnp.conj(sb)
-    eye = jnp.eye(n_body + n_lid, dtype=bool)[:n_body]
-    pot_b, dn_b = _influence(mid, normal, sa, sb, nu, eye)
-    pot_bm, dn_bm = _influence(mid, normal, ma, mb, nu, jnp.zeros_like(eye))
+    hull = y + 1j * z
+    lid = jnp.linspace(y[0], 0.0, n_lid + 1) + 0j
+    lmid = 0.5 * (lid[:-1] + lid[1:])
+    # the sources: hull and lid panels, and their mirror images across x = 0 (the other half)
+    lines = (hull, lid, -jnp.conj(hull), -jnp.conj(lid))
     down = jnp.full((n_lid,), -1j)
-    no_self = jnp.zeros((n_lid, n_body + n_lid), dtype=bool)
-    _, dn_l = _influence(lmid, down, sa, sb, nu, no_self)
-    _, dn_lm = _influence(lmid, down, ma, mb, nu, no_self)
+    body_rows, lid_rows = [], []
+    for k, verts in enumerate(lines):
+        n_src = verts.shape[0] - 1
+        own = jnp.eye(n_body, n_src, dtype=bool) if k == 0 else jnp.zeros((n_body, n_src), bool)
+        body_rows.append(_influence(mid, normal, verts, nu, own))
+        lid_rows.append(_influence(lmid, down, verts, nu, jnp.zeros((n_lid, n_src), bool))[1])
+    pot = jnp.concatenate([r[0] for r in body_rows[:2]], axis=1)
+    pot_m = jnp.concatenate([r[0] for r in body_rows[2:]], axis=1)
+    dn = jnp.concatenate([r[1] for r in body_rows[:2]], axis=1)
+    dn_m = jnp.concatenate([r[1] for r in body_rows[2:]], axis=1)
+    dl = jnp.concatenate(lid_rows[:2], axis=1)
+    dl_m = jnp.concatenate(lid_rows[2:], axis=1)
     out = []
     for sign in (1.0, -1.0):
-        m = jnp.concatenate([dn_b + sign * dn_bm, dn_l + sign * dn_lm], axis=0)
-        out.append((m, pot_b + sign * pot_bm))
+        m = jnp.concatenate([dn + sign * dn_m, dl + sign * dl_m], axis=0)
+        out.append((m, pot + sign * pot_m))
     return out
 
 
