@@ -1,0 +1,112 @@
+"""Hulls for strip theory: the strip integrals against their closed forms on a box, the
+Wigley hull, an offsets file, gradients, and the committed comparison with the panel
+method (benchmarks/strip_vs_capytaine.py)."""
+
+import json
+from pathlib import Path
+
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+import jaxtow.strip as S
+
+ROOT = Path(__file__).parents[1]
+
+
+def test_box_strip_integrals_are_the_section_times_the_lever_moments():
+    """Uniform sections: A33 = L a33, A35 = 0, A55 = a33 Σ x² dx = a33 L³/12 (1 − 1/n²),
+    A66 = a22 L³/12 (1 − 1/n²), A26 = 0, and sway-roll as the section's."""
+    L, n = 76.2, 21
+    hull = S.box(L, 24.4, 5.0, n_stations=n)
+    om = np.array([0.5, 0.9])
+    c = S.hull_coefficients(hull, om)
+    sec = S.section_coefficients(hull.y[0], hull.z[0], om)
+    lever = L**3 / 12 * (1 - 1 / n**2)
+    a, s = np.asarray(c.added_mass), np.asarray(sec.added_mass)
+    assert np.allclose(a[:, 1, 1], L * s[:, 1, 1], rtol=1e-10)
+    assert np.allclose(a[:, 3, 3], lever * s[:, 1, 1], rtol=1e-10)
+    assert np.allclose(a[:, 4, 4], lever * s[:, 0, 0], rtol=1e-10)
+    assert np.allclose(a[:, 0, 2], L * s[:, 0, 2], rtol=1e-10)
+    assert np.max(np.abs(a[:, 1, 3])) < 1e-9 * np.max(a[:, 1, 1]) * L
+    assert np.max(np.abs(a[:, 0, 4])) < 1e-9 * np.max(a[:, 0, 0]) * L
+    b = np.asarray(c.damping)
+    assert np.all(b[:, 1, 1] > 0) and np.all(b[:, 3, 3] > 0)
+
+
+def test_wigley_hull_is_symmetric_and_positive():
+    hull = S.wigley(3.0, 0.3, 0.1875, n_stations=20)
+    c = S.hull_coefficients(hull, np.array([4.0, 6.0]))
+    a = np.asarray(c.added_mass)
+    assert np.all(a[:, 1, 1] > 0) and np.all(a[:, 3, 3] > 0)
+    assert np.max(np.abs(a[:, 1, 3])) < 1e-8 * a[0, 1, 1] * 3.0  # fore-aft symmetric
+    assert np.all(np.asarray(c.damping)[:, 1, 1] > 0)
+    # the sections follow y = (B/2)(1 − (2x/L)²)(1 − (z/T)²)
+    x = np.asarray(hull.x)
+    assert np.allclose(np.asarray(hull.y)[:, 0], 0.15 * (1 - (2 * x / 3.0) ** 2))
+    assert np.allclose(np.asarray(hull.y)[:, -1], 0.0) and np.allclose(
+        np.asarray(hull.z)[:, -1], -0.1875
+    )
+
+
+def test_offsets_file_reads_a_box(tmp_path):
+    path = tmp_path / "box.csv"
+    xs = np.linspace(-38.1, 38.1, 22)
+    lines = ["# a box barge, half-breadths at the waterline heights", "x,0,-2.5,-5"]
+    lines += [f"{x},12.2,12.2,12.2" for x in xs]
+    path.write_text("\n".join(lines) + "\n")
+    hull = S.offsets_file(path, n_points=10)
+    assert hull.name == "box" and hull.y.shape == (22, 10)
+    assert float(jnp.sum(hull.dx)) == pytest.approx(76.2)
+    assert np.allclose(np.asarray(hull.x), xs)
+    # each station: the side at half-breadth 12.2 m from the waterline to the keel, then
+    # closed to the centreline along the keel
+    y, z = np.asarray(hull.y), np.asarray(hull.z)
+    assert np.allclose(y[:, :-1], 12.2) and np.allclose(y[:, -1], 0.0)
+    assert np.allclose(z[:, 0], 0.0) and np.allclose(z[:, -2:], -5.0)
+    assert np.all(np.diff(z, axis=1) <= 0)
+
+
+@pytest.mark.parametrize(
+    "text, match",
+    [
+        ("x,0,-1\n0,1,1\n", "at least two stations"),
+        ("x,-0.5,-1\n0,1,1\n1,1,1\n", "include 0"),
+        ("x,0,-1\n0,1\n1,1,1\n", "half-breadths"),
+        ("x,0,-1\n1,1,1\n0,1,1\n", "increase"),
+        ("x,0,-1\n0,1,a\n1,1,1\n", "not a table of numbers"),
+    ],
+)
+def test_bad_offsets_files_are_named(tmp_path, text, match):
+    path = tmp_path / "bad.csv"
+    path.write_text(text)
+    with pytest.raises(ValueError, match=match) as e:
+        S.offsets_file(path)
+    assert "bad.csv" in str(e.value)
+
+
+@pytest.mark.slow
+def test_hull_gradient_in_the_breadth_equals_finite_differences():
+    def a33(breadth):
+        hull = S.wigley(3.0, breadth, 0.1875, n_stations=6, n_points=6)
+        return S.hull_coefficients(hull, jnp.array([5.0])).added_mass[0, 1, 1]
+
+    g = float(jax.grad(a33)(0.3))
+    h = 1e-6
+    fd = (float(a33(0.3 + h)) - float(a33(0.3 - h))) / (2 * h)
+    assert g == pytest.approx(fd, rel=1e-5)
+
+
+def test_committed_panel_comparison_matches_the_strip_side():
+    """benchmarks/data/strip/box_zero_speed.json: the strip values recomputed here equal the
+    file's (so the table in docs/strip.md is what the code gives); the panel side is
+    Capytaine's, reproduced by the benchmark's command."""
+    data = json.loads((ROOT / "benchmarks" / "data" / "strip" / "box_zero_speed.json").read_text())
+    hull = S.box(76.2, 24.4, 5.0, **data["strip"])
+    c = S.hull_coefficients(hull, np.array(data["omega"]))
+    modes = list(S.MODES)
+    for r in data["rows"]:
+        i, k = data["omega"].index(r["omega"]), modes.index(r["mode"])
+        assert float(c.added_mass[i, k, k]) == pytest.approx(r["strip_a"], rel=1e-8)
+        assert float(c.damping[i, k, k]) == pytest.approx(r["strip_b"], rel=1e-8)
