@@ -1,7 +1,8 @@
-"""Zero-speed radiation coefficients of the box barge (Barge 1, 76.2 x 24.4 x 5 m): strip
-theory (`jaxtow.strip.hull_coefficients`) against the 3-D panel method (Capytaine, the same
-solver settings as jaxtow's panel pipeline), in one process, with the time of each side
-(compile separate). Writes the table to ``benchmarks/data/strip/box_zero_speed.json``; the
+"""Zero-speed radiation coefficients and head-sea heave and pitch RAOs of the box barge
+(Barge 1, 76.2 x 24.4 x 5 m): strip theory (`jaxtow.strip.hull_coefficients`,
+`heave_pitch_raos`) against the 3-D panel method (Capytaine, the same solver settings as
+jaxtow's panel pipeline), in one process, with the time of each side for the radiation
+coefficients (compile separate). Writes the table to ``benchmarks/data/strip/box_zero_speed.json``; the
 test suite recomputes the strip side and checks it against the file.
 
     python benchmarks/strip_vs_capytaine.py [--panel-size 2.0] [--json PATH]
@@ -25,6 +26,7 @@ from jaxtow.bem.capytaine_mesh import symmetric_capytaine_mesh
 OUT = Path(__file__).parent / "data" / "strip" / "box_zero_speed.json"
 L, B, T = 76.2, 24.4, 5.0
 OMEGA = [0.3, 0.5, 0.7, 0.9, 1.1]
+RAO_OMEGA = [0.2, 0.35, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2]
 #: (strip mode index, Capytaine dof) for the compared diagonal terms
 PAIRS = {
     "sway": (0, "Sway"),
@@ -72,7 +74,36 @@ def capytaine_side(panel_size):
                 for (m, (_, d)), r in zip(PAIRS.items(), res)
             }
         )
-    return out, time.perf_counter() - t0, mesh.n_panels if hasattr(mesh, "n_panels") else None
+    elapsed = time.perf_counter() - t0
+    raos = capytaine_raos(cpt, body, solver)
+    return out, elapsed, raos
+
+
+def capytaine_raos(cpt, body, solver):
+    """Heave and pitch RAOs in head seas from Capytaine's added mass, damping and exciting
+    forces (Froude-Krylov plus diffraction), with the same mass and restoring matrices as
+    `jaxtow.strip.heave_pitch_raos` (so the two differ by their hydrodynamics only)."""
+    from capytaine.bem.airy_waves import froude_krylov_force
+
+    hs = strip.hydrostatics(strip.box(L, B, T, **STRIP))
+    mass = 1025.0 * float(hs["volume"])
+    m = np.diag([mass, mass * (0.25 * L) ** 2])
+    c = np.array([[float(hs["c33"]), float(hs["c35"])], [float(hs["c35"]), float(hs["c55"])]])
+    dofs = ("Heave", "Pitch")
+    out = []
+    for w in RAO_OMEGA:
+        env = dict(omega=w, water_depth=math.inf)
+        rad = [cpt.RadiationProblem(body=body, radiating_dof=d, **env) for d in dofs]
+        dif = cpt.DiffractionProblem(body=body, wave_direction=math.pi, **env)  # head seas
+        res = solver.solve_all(rad + [dif], progress_bar=False)
+        a = np.array([[res[j].added_mass[i] for j in range(2)] for i in dofs])
+        b = np.array([[res[j].radiation_damping[i] for j in range(2)] for i in dofs])
+        fk = froude_krylov_force(res[2].problem)
+        f = np.array([res[2].forces[d] + fk[d] for d in dofs])
+        # Capytaine's e^{-iωt} convention, pitch + bow down (rotation about +y): as the strips
+        h = -(w**2) * (m + a) - 1j * w * b + c
+        out.append(np.linalg.solve(h, f))
+    return np.array(out)
 
 
 def main(argv=None):
@@ -81,7 +112,20 @@ def main(argv=None):
     ap.add_argument("--json", default=str(OUT))
     args = ap.parse_args(argv)
     c, compile_s, strip_s = strip_side()
-    cap, cap_s, n_panels = capytaine_side(args.panel_size)
+    cap, cap_s, cap_raos = capytaine_side(args.panel_size)
+    strip_raos = np.asarray(
+        strip.heave_pitch_raos(strip.box(L, B, T, **STRIP), np.array(RAO_OMEGA), np.array([0.0]))
+    )[:, 0]
+    raos = [
+        dict(
+            omega=w,
+            strip_heave=abs(complex(strip_raos[i, 0])),
+            panel_heave=abs(complex(cap_raos[i, 0])),
+            strip_pitch=abs(complex(strip_raos[i, 1])),
+            panel_pitch=abs(complex(cap_raos[i, 1])),
+        )
+        for i, w in enumerate(RAO_OMEGA)
+    ]
     rows = []
     for i, w in enumerate(OMEGA):
         for m, (k, _) in PAIRS.items():
@@ -94,6 +138,7 @@ def main(argv=None):
         panel_size=args.panel_size,
         omega=OMEGA,
         rows=rows,
+        head_sea_raos=raos,
         time_s=dict(strip_compile=compile_s, strip=strip_s, capytaine=cap_s),
         ratio_capytaine_over_strip=cap_s / strip_s,
         command="python benchmarks/strip_vs_capytaine.py",
@@ -106,6 +151,12 @@ def main(argv=None):
             f"ω={r['omega']:.1f} {r['mode']:6s} a: strip {r['strip_a']:.4g} panel "
             f"{r['panel_a']:.4g} ({r['strip_a'] / r['panel_a'] - 1:+.1%})  b: strip "
             f"{r['strip_b']:.4g} panel {r['panel_b']:.4g}"
+        )
+    for r in raos:
+        print(
+            f"ω={r['omega']:.2f} heave strip {r['strip_heave']:.3f} panel {r['panel_heave']:.3f}"
+            f"  pitch [deg/m] strip {math.degrees(r['strip_pitch']):.3f} panel "
+            f"{math.degrees(r['panel_pitch']):.3f}"
         )
     print(
         f"strip {strip_s:.2f} s (+ {compile_s:.1f} s compile), Capytaine {cap_s:.1f} s: "

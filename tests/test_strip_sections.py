@@ -124,6 +124,7 @@ def test_added_mass_and_damping_are_symmetric():
         assert np.allclose(m[:, 0, 2], m[:, 2, 0], rtol=5e-3), k
 
 
+@pytest.mark.slow
 def test_the_lid_removes_the_irregular_frequency_and_changes_nothing_else():
     """B/T = 2: the first irregular frequency is at ω²B/2g = (π/2) coth(π/2) = 1.71. Without
     the lid the heave added mass jumps there; with it the curve is smooth, and away from it

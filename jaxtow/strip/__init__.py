@@ -17,7 +17,9 @@ if TYPE_CHECKING:
         Hull as Hull,
         HullCoefficients as HullCoefficients,
         box as box,
+        heave_pitch_raos as heave_pitch_raos,
         hull_coefficients as hull_coefficients,
+        hydrostatics as hydrostatics,
         offsets_file as offsets_file,
         wigley as wigley,
     )
@@ -37,6 +39,8 @@ __all__ = [
     "offsets_file",
     "hull_coefficients",
     "HullCoefficients",
+    "hydrostatics",
+    "heave_pitch_raos",
     "MODES",
 ]
 

@@ -18,9 +18,9 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
-from jaxtyping import Array, Float
+from jaxtyping import Array, Complex, Float
 
-from ._sections import section_coefficients
+from ._sections import _panels, section_coefficients
 
 #: The zero-speed radiation modes of a hull: sway, heave, roll, pitch, yaw (ship modes 2-6).
 MODES = ("sway", "heave", "roll", "pitch", "yaw")
@@ -146,12 +146,39 @@ def offsets_file(path, *, n_points: int = 12) -> Hull:
 
 
 class HullCoefficients(eqx.Module):
-    """Zero-speed strip-theory added mass and damping of a hull, (..., 5, 5) over `MODES`
-    (sway, heave, roll, pitch, yaw) in SI, at ``omega`` (...)."""
+    """Zero-speed strip-theory added mass and damping of a hull, (w, 5, 5) over `MODES`
+    (sway, heave, roll, pitch, yaw) in SI, at ``omega`` (w); with headings ``beta`` (b)
+    [rad] (waves from, counter-clockwise from the bow: 0 head seas), the exciting forces
+    per unit wave amplitude at midships ``exciting`` (w, b, 5) (else None)."""
 
-    omega: Float[Array, "..."]
-    added_mass: Float[Array, "... 5 5"]
-    damping: Float[Array, "... 5 5"]
+    omega: Float[Array, " w"]
+    added_mass: Float[Array, "w 5 5"]
+    damping: Float[Array, "w 5 5"]
+    beta: Float[Array, " b"] | None = None
+    exciting: Complex[Array, "w b 5"] | None = None
+
+
+def _section_wave_forces(y, z, potentials, omega, sin_chi, rho, g):
+    """Sway, heave and roll forces per unit length of a wave of unit amplitude travelling at
+    angle χ to the ship's x axis, on one section: X_j = −iωρ ∮ (φ₀ n_j − φ_j ∂φ₀/∂n) ds
+    (Froude-Krylov plus the diffraction of Salvesen, Tuck & Faltinsen 1970 through the
+    radiation potentials, the Haskind form of strip theory); φ₀ = −i(g/ω) e^{kz + iky sinχ}
+    on the section, the factor e^{ikx cosχ} left to the caller. At sinχ = 1 it is the 2-D
+    beam-sea diffraction force (tested against the direct solve)."""
+    _, _, mid, length, _, normal = _panels(y, z)
+    k = omega**2 / g  # (w,)
+    pts = jnp.concatenate([mid, -jnp.conj(mid)])
+    nrm = jnp.concatenate([normal, -jnp.conj(normal)])
+    ln = jnp.concatenate([length, length])
+    parity = jnp.array([-1.0, 1.0, -1.0])
+    phi = jnp.concatenate([potentials, potentials * parity], axis=-2)  # (w, 2n, 3)
+    x, yy, nx, ny = pts.real, pts.imag, nrm.real, nrm.imag
+    n_modes = jnp.stack([nx, ny, x * ny - yy * nx], axis=-1)  # (2n, 3)
+    kk = k[:, None]
+    phi0 = -1j * g / omega[:, None] * jnp.exp(kk * yy + 1j * kk * x * sin_chi)
+    dphi0 = phi0 * kk * (1j * sin_chi * nx + ny)
+    integrand = phi0[..., None] * n_modes - phi * dphi0[..., None]
+    return -1j * omega[:, None] * rho * jnp.sum(integrand * ln[:, None], axis=-2)
 
 
 def _strip_matrix(sec, x, dx):
@@ -173,16 +200,92 @@ def _strip_matrix(sec, x, dx):
     return m
 
 
+def _strip_forces(sec_forces, x, dx, k_cos):
+    """Σ over strips of section forces (n, w, b, 3) with the wave's phase e^{ik x cosχ} into
+    the hull's (w, b, 5): sway, heave, roll, pitch = −Σ x f3, yaw = Σ x f2."""
+    phase = jnp.exp(1j * k_cos[None] * x[:, None, None])  # (n, w, b)
+    f = sec_forces * (phase * dx[:, None, None])[..., None]
+    xs = x[:, None, None]
+    return jnp.stack(
+        [
+            jnp.sum(f[..., 0], axis=0),
+            jnp.sum(f[..., 1], axis=0),
+            jnp.sum(f[..., 2], axis=0),
+            -jnp.sum(xs * f[..., 1], axis=0),
+            jnp.sum(xs * f[..., 0], axis=0),
+        ],
+        axis=-1,
+    )
+
+
 def hull_coefficients(
-    hull: Hull, omega, *, rho: float = 1025.0, g: float = 9.80665
+    hull: Hull, omega, beta=None, *, rho: float = 1025.0, g: float = 9.80665
 ) -> HullCoefficients:
     """Zero-speed strip theory: the section coefficients of every station
     (`section_coefficients`, vmapped over the stations) summed over the strips, with the
-    lever arms of pitch and yaw. Differentiable in the offsets."""
+    lever arms of pitch and yaw; with headings ``beta`` [rad] also the exciting forces
+    (`_section_wave_forces` of each station, with the wave's phase along the hull).
+    Differentiable in the offsets."""
     omega = jnp.atleast_1d(jnp.asarray(omega, dtype=float))
     secs = jax.vmap(lambda y, z: section_coefficients(y, z, omega, rho=rho, g=g))(hull.y, hull.z)
-    return HullCoefficients(
+    out = dict(
         omega=omega,
         added_mass=_strip_matrix(secs.added_mass, hull.x, hull.dx),
         damping=_strip_matrix(secs.damping, hull.x, hull.dx),
     )
+    if beta is None:
+        return HullCoefficients(**out)
+    beta = jnp.atleast_1d(jnp.asarray(beta, dtype=float))
+    # the waves travel towards χ = β + π: cos χ = −cos β, sin χ = −sin β
+    per_heading = jax.vmap(
+        lambda sin_chi: jax.vmap(
+            lambda y, z, p: _section_wave_forces(y, z, p, omega, sin_chi, rho, g)
+        )(hull.y, hull.z, secs.potentials),
+        out_axes=2,
+    )(-jnp.sin(beta))  # (n, w, b, 3)
+    k = omega**2 / g
+    exciting = _strip_forces(per_heading, hull.x, hull.dx, -k[:, None] * jnp.cos(beta)[None])
+    return HullCoefficients(**out, beta=beta, exciting=exciting)
+
+
+def hydrostatics(hull: Hull, *, rho: float = 1025.0, g: float = 9.80665) -> dict:
+    """Displacement ∇ [m³], centre of buoyancy (x_B, z_B) [m], and the heave-pitch restoring
+    C33 = ρg∫B dx, C35 = −ρg∫xB dx, C55 = ρg∫x²B dx [N/m, N, N m] from the stations (the
+    waterplane by the strips; C55 without the small ρg∇(z_B − z_G))."""
+    y, z = hull.y, hull.z
+    cross = y[:, :-1] * z[:, 1:] - y[:, 1:] * z[:, :-1]  # shoelace terms of the half contour
+    area = jnp.abs(jnp.sum(cross, axis=1))  # both halves: 2 × ½ |Σ|
+    zc = jnp.sum(cross * (z[:, :-1] + z[:, 1:]), axis=1) / (3.0 * jnp.sum(cross, axis=1))
+    vol = jnp.sum(area * hull.dx)
+    b = 2.0 * y[:, 0]
+    return dict(
+        volume=vol,
+        x_b=jnp.sum(hull.x * area * hull.dx) / vol,
+        z_b=jnp.sum(zc * area * hull.dx) / vol,
+        c33=rho * g * jnp.sum(b * hull.dx),
+        c35=-rho * g * jnp.sum(hull.x * b * hull.dx),
+        c55=rho * g * jnp.sum(hull.x**2 * b * hull.dx),
+    )
+
+
+def heave_pitch_raos(
+    hull: Hull, omega, beta, *, k_yy=None, rho: float = 1025.0, g: float = 9.80665
+):
+    """Heave [m/m] and pitch [rad/m] RAOs at zero speed, (w, b, 2) complex, per unit wave
+    amplitude at midships: [−ω²(M + A) − iωB + C] η = F over heave and pitch, with the mass
+    ρ∇ at the centre of buoyancy's x and the pitch radius of gyration ``k_yy`` [m] (default
+    0.25 L, `jaxtow.presets` radii) about the waterline at midships."""
+    c = hull_coefficients(hull, omega, beta, rho=rho, g=g)
+    hs = hydrostatics(hull, rho=rho, g=g)
+    length = jnp.sum(hull.dx)
+    k_yy = 0.25 * length if k_yy is None else k_yy
+    mass = rho * hs["volume"]
+    m = jnp.array([[mass, -mass * hs["x_b"]], [-mass * hs["x_b"], mass * k_yy**2]])
+    cmat = jnp.array([[hs["c33"], hs["c35"]], [hs["c35"], hs["c55"]]])
+    idx = jnp.array([1, 3])
+    a = c.added_mass[:, idx][:, :, idx]
+    bm = c.damping[:, idx][:, :, idx]
+    w = c.omega[:, None, None]
+    h = -(w**2) * (m + a) - 1j * w * bm + cmat  # (w, 2, 2)
+    f = c.exciting[..., idx]  # (w, b, 2)
+    return jnp.linalg.solve(h[:, None], f[..., None])[..., 0]

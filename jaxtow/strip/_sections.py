@@ -58,14 +58,18 @@ LID_FRACTION = 0.5
 
 class SectionCoefficients(eqx.Module):
     """Hydrodynamic coefficients of a section per unit length, in SI, over the modes (sway,
-    heave, roll about the waterline centre, + starboard down): ``added_mass`` and ``damping`` (..., 3, 3) [kg/m,
-    kg/(m s), ... with m and rad], ``exciting`` (..., 3) complex per unit wave amplitude in
-    beam waves travelling to +x, i.e. from starboard (N/m per m, N m/m per m), at ``omega`` (...) [rad/s]."""
+    heave, roll about the waterline centre, + starboard down): ``added_mass`` and
+    ``damping`` (..., 3, 3) [kg/m, kg/(m s), ... with m and rad], ``exciting`` (..., 3)
+    complex per unit wave amplitude in beam waves travelling to +x, i.e. from starboard
+    (N/m per m, N m/m per m), at ``omega`` (...) [rad/s]; ``potentials`` (..., panels, 3):
+    the radiation potentials of unit velocity in each mode at the half contour's panel
+    midpoints (the other half: heave even, sway and roll odd in x) [m²/s]."""
 
     omega: Float[Array, "..."]
     added_mass: Float[Array, "... 3 3"]
     damping: Float[Array, "... 3 3"]
     exciting: Complex[Array, "... 3"]
+    potentials: Complex[Array, "... panels 3"]
     area: Float[Array, ""]
     beam: Float[Array, ""]
     draft: Float[Array, ""]
@@ -222,7 +226,7 @@ def _solve_one(y, z, omega, rho, g, n_lid):
     )
     total = (phi0_odd + phi_anti[:, 2], phi0_even + phi_sym[:, 1], phi0_odd + phi_anti[:, 2])
     exciting = -1j * omega * rho * jnp.stack([integral(total[j], j) for j in range(3)])
-    return -rho * m_int.real, -omega * rho * m_int.imag, exciting
+    return -rho * m_int.real, -omega * rho * m_int.imag, exciting, jnp.stack(radiated, axis=-1)
 
 
 @functools.partial(jax.jit, static_argnames=("n_lid",))
@@ -252,7 +256,7 @@ def section_coefficients(y, z, omega, *, rho: float = 1025.0, g: float = 9.80665
     omega = jnp.asarray(omega, dtype=float)
     if omega.ndim > 1:
         raise ValueError(f"omega must be a scalar or a 1-D array, got shape {omega.shape}")
-    added, damping, exciting = _solve(y, z, omega.reshape(-1), rho, g, n_lid)
+    added, damping, exciting, potentials = _solve(y, z, omega.reshape(-1), rho, g, n_lid)
     shape = omega.shape
     # the half section's area by the shoelace formula over the closed contour
     area = 2.0 * 0.5 * jnp.abs(jnp.sum(y[:-1] * z[1:] - y[1:] * z[:-1]))
@@ -261,6 +265,7 @@ def section_coefficients(y, z, omega, *, rho: float = 1025.0, g: float = 9.80665
         added_mass=added.reshape(shape + (3, 3)),
         damping=damping.reshape(shape + (3, 3)),
         exciting=exciting.reshape(shape + (3,)),
+        potentials=potentials.reshape(shape + potentials.shape[1:]),
         area=area,
         beam=2.0 * y[0],
         draft=-jnp.min(z),
