@@ -287,5 +287,6 @@ def heave_pitch_raos(
     bm = c.damping[:, idx][:, :, idx]
     w = c.omega[:, None, None]
     h = -(w**2) * (m + a) - 1j * w * bm + cmat  # (w, 2, 2)
+    assert c.exciting is not None  # headings were given
     f = c.exciting[..., idx]  # (w, b, 2)
     return jnp.linalg.solve(h[:, None], f[..., None])[..., 0]
