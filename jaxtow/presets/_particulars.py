@@ -115,7 +115,8 @@ class Skegs:
       whose aft end is at the stern, −L/2 + chord/2).
 
     Twin skegs are counted each on its own: the formulation neglects their interference
-    (Inoue, Kijima & Doi measured that it grows as skegs come closer together)."""
+    (in Inoue, Kijima & Doi's tests the lateral force grew as twin skegs were set further
+    apart)."""
 
     count: int = 2
     span: float = 0.0

@@ -5,7 +5,7 @@ Coordinates of the section plane: x across (the ship's y, to port), y up (the sh
 z), the free surface at y = 0, the fluid below. Time dependence e^{−iωt}; ν = ω²/g.
 
 **Green function** (a unit pulsating source at ζ = ξ + iη below the surface, Wehausen &
-Laitone 1960, eq. 13.17 in this normalisation):
+Laitone 1960, in this normalisation):
 
     G(z; ζ) = ln|z − ζ| − ln|z − ζ̄| + 2 Re f(w) − 2πi Re e^{−w},   w = iν(z − ζ̄),
 
