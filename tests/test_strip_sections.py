@@ -143,9 +143,9 @@ def test_the_lid_removes_the_irregular_frequency_and_changes_nothing_else():
     assert np.allclose(np.asarray(a0), np.asarray(a1), rtol=5e-3, atol=1e-9)
 
 
-#: Ursell's (1949) heaving semicircle as plotted by Vugts (1968, Int. Shipbuilding Progress
-#: 15(167), 251-276), read from the figure: (ω√(R/g), a33/(ρπR²/2)) and
-#: (ω√(R/g), b33√(R/g)/(ρπR²/2)); the reading is good to about ±0.01.
+#: Ursell's (1949) heaving semicircle, read from a published plot (a public digitisation whose
+#: source is Vugts 1968, Int. Shipbuilding Progress 15(167), 251-276): (ω√(R/g), a33/(ρπR²/2))
+#: and (ω√(R/g), b33√(R/g)/(ρπR²/2)); the reading is good to about ±0.01.
 URSELL_A33 = [(0.3093, 1.434), (0.5239, 0.840), (0.8872, 0.594), (1.2047, 0.659), (1.5319, 0.756)]
 URSELL_B33 = [(0.2969, 0.524), (0.5128, 0.617), (0.9081, 0.452), (1.1888, 0.274), (1.4949, 0.137)]
 
