@@ -29,23 +29,28 @@ import numpy as np
 _EULER = 0.57721566490153286061
 _N_SERIES = 110
 _K = np.arange(1, _N_SERIES + 1, dtype=float)
+_SERIES_COEF = tuple(float(c) for c in 1.0 / (_K * np.cumprod(_K)))  # 1/(k·k!)
 _N_ASYMPT = 30
-_FACT = np.cumprod(np.concatenate([[1.0], np.arange(1, _N_ASYMPT, dtype=float)]))
+_FACT = tuple(float(c) for c in np.cumprod(np.r_[1.0, np.arange(1, _N_ASYMPT, dtype=float)]))
 _N_CF = 60
 
 
 def _series(w):
-    """e^{−w}(γ + Ln w + Σ w^k/(k·k!))."""
-    terms = jnp.cumprod(w[..., None] / _K, axis=-1)
-    s = jnp.sum(terms / _K, axis=-1)
-    return jnp.exp(-w) * (_EULER + jnp.log(w) + s)
+    """e^{−w}(γ + Ln w + Σ w^k/(k·k!)), the sum by Horner's rule (one fused loop, no
+    (…, terms) array)."""
+    s = jnp.full_like(w, _SERIES_COEF[-1])
+    for c in _SERIES_COEF[-2::-1]:
+        s = s * w + c
+    return jnp.exp(-w) * (_EULER + jnp.log(w) + s * w)
 
 
 def _asymptotic(w):
-    """Σ_{k<K} k!/w^{k+1} + iπ sgn(Im w) e^{−w}."""
+    """Σ_{k<K} k!/w^{k+1} + iπ sgn(Im w) e^{−w} (the sum by Horner's rule in 1/w)."""
     inv = 1.0 / w
-    powers = jnp.cumprod(jnp.broadcast_to(inv[..., None], w.shape + (_N_ASYMPT,)), axis=-1)
-    return jnp.sum(_FACT * powers, axis=-1) + 1j * jnp.pi * jnp.sign(w.imag) * jnp.exp(-w)
+    s = jnp.full_like(w, _FACT[-1])
+    for c in _FACT[-2::-1]:
+        s = s * inv + c
+    return s * inv + 1j * jnp.pi * jnp.sign(w.imag) * jnp.exp(-w)
 
 
 def _cf(w):

@@ -106,40 +106,50 @@ def _rankine(z, a, b):
     return pot, vel
 
 
-def _wave(z, verts, nu):
-    """The wave part of the sources on the polyline ``verts`` (panels between neighbours),
-    over the image panels: ∫ [2 f(w) − 2πi e^{−w}] ds, real in space for the potential's two
-    time components, and the z-derivatives. Each panel end's exponential integral is
-    evaluated once and shared by the two panels that meet there.
+def _wave(z, lines, nu):
+    """The wave part of the sources on each polyline of ``lines`` (panels between
+    neighbours), over the image panels: ∫ [2 f(w) − 2πi e^{−w}] ds, real in space for the
+    potential's two time components, and the z-derivatives. The exponential integral is
+    evaluated once per point and vertex, for all the lines in one call, and shared by the
+    two panels that meet at a vertex.
 
-    Returns (∫f ds, ∫e^{−w} ds, d/dz ∫f ds, d/dz ∫e^{−w} ds), each (points, panels)."""
-    img = jnp.conj(verts)
-    length = jnp.abs(img[1:] - img[:-1])
-    e = (img[1:] - img[:-1]) / length
+    Returns, per line, (∫f ds, ∫e^{−w} ds, d/dz ∫f ds, d/dz ∫e^{−w} ds), each (points,
+    panels)."""
+    img = jnp.conj(jnp.concatenate(lines))
     w = 1j * nu * (z[..., None] - img)
-    f = exp_ei(w)
-    q = jnp.log(w) - f  # an antiderivative of f: d/dw (Ln w − f) = f
-    ex = jnp.exp(-w)
-    # w = iν(z − ζ'), dw = −iν e ds:  ∫ f ds = −(1/(iνe)) [Ln w − f],  ∫ e^{−w} ds likewise
-    int_f = -(q[..., 1:] - q[..., :-1]) / (1j * nu * e)
-    int_e = (ex[..., 1:] - ex[..., :-1]) / (1j * nu * e)
-    # d/dz ∫ f ds = ∫ iν f'(w) ds = −(1/e) [f];  d/dz ∫ e^{−w} ds = −(1/e) [e^{−w}]
-    d_f = -(f[..., 1:] - f[..., :-1]) / e
-    d_e = -(ex[..., 1:] - ex[..., :-1]) / e
-    return int_f, int_e, d_f, d_e
+    f_all = exp_ei(w)
+    q_all = jnp.log(w) - f_all  # an antiderivative of f: d/dw (Ln w − f) = f
+    ex_all = jnp.exp(-w)
+    out, start = [], 0
+    for verts in lines:
+        stop = start + verts.shape[0]
+        f, q, ex = (v[..., start:stop] for v in (f_all, q_all, ex_all))
+        im = img[start:stop]
+        length = jnp.abs(im[1:] - im[:-1])
+        e = (im[1:] - im[:-1]) / length
+        # w = iν(z − ζ'), dw = −iν e ds: ∫ f ds = −(1/(iνe)) [Ln w − f], ∫ e^{−w} ds likewise
+        int_f = -(q[..., 1:] - q[..., :-1]) / (1j * nu * e)
+        int_e = (ex[..., 1:] - ex[..., :-1]) / (1j * nu * e)
+        # d/dz ∫ f ds = ∫ iν f'(w) ds = −(1/e) [f];  d/dz ∫ e^{−w} ds = −(1/e) [e^{−w}]
+        d_f = -(f[..., 1:] - f[..., :-1]) / e
+        d_e = -(ex[..., 1:] - ex[..., :-1]) / e
+        out.append((int_f, int_e, d_f, d_e))
+        start = stop
+    return out
 
 
-def _influence(z, normal, verts, nu, self_mask):
+def _influence(z, normal, verts, wave, self_mask):
     """Potential and normal velocity at points z (unit normals ``normal``) of unit sources
-    on the panels of the polyline ``verts``, with their images and wave terms; complex in
-    time; ``self_mask`` marks each point's own panel (its jump is taken on the fluid side).
+    on the panels of the polyline ``verts``, with their images and the wave terms ``wave``
+    (`_wave` of this line); complex in time; ``self_mask`` marks each point's own panel (its
+    jump is taken on the fluid side).
 
     Returns (pot, dn), each (points, panels)."""
     zz = z[:, None]
     a, b = verts[None, :-1], verts[None, 1:]
     pot_r, vel_r = _rankine(zz, a, b)
     pot_i, vel_i = _rankine(zz, jnp.conj(a), jnp.conj(b))
-    int_f, int_e, d_f, d_e = _wave(z, verts, nu)
+    int_f, int_e, d_f, d_e = wave
     pot = (pot_r - pot_i + 2.0 * jnp.real(int_f)) - 2j * jnp.pi * jnp.real(int_e)
     n = normal[:, None]
     dn_r = jnp.where(self_mask, jnp.pi, jnp.real(vel_r * n))
@@ -157,24 +167,20 @@ def _systems(y, z, nu, n_lid):
     lmid = 0.5 * (lid[:-1] + lid[1:])
     # the sources: hull and lid panels, and their mirror images across x = 0 (the other half)
     lines = (hull, lid, -jnp.conj(hull), -jnp.conj(lid))
-    down = jnp.full((n_lid,), -1j)
-    body_rows, lid_rows = [], []
-    for k, verts in enumerate(lines):
+    # the field points: the body's panel midpoints, then just below the lid's
+    points = jnp.concatenate([mid, lmid])
+    normals = jnp.concatenate([normal, jnp.full((n_lid,), -1j)])
+    waves = _wave(points, lines, nu)
+    rows = []
+    for k, (verts, wave) in enumerate(zip(lines, waves)):
         n_src = verts.shape[0] - 1
-        own = jnp.eye(n_body, n_src, dtype=bool) if k == 0 else jnp.zeros((n_body, n_src), bool)
-        body_rows.append(_influence(mid, normal, verts, nu, own))
-        lid_rows.append(_influence(lmid, down, verts, nu, jnp.zeros((n_lid, n_src), bool))[1])
-    pot = jnp.concatenate([r[0] for r in body_rows[:2]], axis=1)
-    pot_m = jnp.concatenate([r[0] for r in body_rows[2:]], axis=1)
-    dn = jnp.concatenate([r[1] for r in body_rows[:2]], axis=1)
-    dn_m = jnp.concatenate([r[1] for r in body_rows[2:]], axis=1)
-    dl = jnp.concatenate(lid_rows[:2], axis=1)
-    dl_m = jnp.concatenate(lid_rows[2:], axis=1)
-    out = []
-    for sign in (1.0, -1.0):
-        m = jnp.concatenate([dn + sign * dn_m, dl + sign * dl_m], axis=0)
-        out.append((m, pot + sign * pot_m))
-    return out
+        own = jnp.eye(n_body + n_lid, n_src, dtype=bool) if k == 0 else False
+        rows.append(_influence(points, normals, verts, wave, own))
+    pot = jnp.concatenate([r[0][:n_body] for r in rows[:2]], axis=1)
+    pot_m = jnp.concatenate([r[0][:n_body] for r in rows[2:]], axis=1)
+    dn = jnp.concatenate([r[1] for r in rows[:2]], axis=1)
+    dn_m = jnp.concatenate([r[1] for r in rows[2:]], axis=1)
+    return [(dn + sign * dn_m, pot + sign * pot_m) for sign in (1.0, -1.0)]
 
 
 def _incident(mid, normal, omega, g):
