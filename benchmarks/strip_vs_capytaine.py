@@ -1,6 +1,6 @@
 """Zero-speed radiation coefficients and head-sea heave and pitch RAOs of the box barge
 (Barge 1, 76.2 x 24.4 x 5 m): strip theory (`jaxtow.strip.hull_coefficients`,
-`heave_pitch_raos`) against the 3-D panel method (Capytaine, the same solver settings as
+`motions`) against the 3-D panel method (Capytaine, the same solver settings as
 jaxtow's panel pipeline), in one process, with the time of each side for the radiation
 coefficients (compile separate). Writes the table to ``benchmarks/data/strip/box_zero_speed.json``; the
 test suite recomputes the strip side and checks it against the file.
@@ -22,6 +22,7 @@ import numpy as np
 import jaxtow.strip as strip
 from jaxtow.bem import meshes
 from jaxtow.bem.capytaine_mesh import symmetric_capytaine_mesh
+from jaxtow.presets import ASSUMPTIONS
 
 OUT = Path(__file__).parent / "data" / "strip" / "box_zero_speed.json"
 L, B, T = 76.2, 24.4, 5.0
@@ -36,6 +37,9 @@ PAIRS = {
     "yaw": (4, "Yaw"),
 }
 STRIP = dict(n_stations=21, n_side=6, n_bottom=6)
+#: the centre of gravity above the waterline: the panel pipeline's (`ASSUMPTIONS['cog_z']`
+#: above the keel)
+Z_G = float(ASSUMPTIONS["cog_z"]["value"]) - T
 
 
 def strip_side():
@@ -82,13 +86,12 @@ def capytaine_side(panel_size):
 def capytaine_raos(cpt, body, solver):
     """Heave and pitch RAOs in head seas from Capytaine's added mass, damping and exciting
     forces (Froude-Krylov plus diffraction), with the same mass and restoring matrices as
-    `jaxtow.strip.heave_pitch_raos` (so the two differ by their hydrodynamics only)."""
+    `jaxtow.strip.motions` (`rigid_body_matrices`) (so the two differ by their hydrodynamics only)."""
     from capytaine.bem.airy_waves import froude_krylov_force
 
-    hs = strip.hydrostatics(strip.box(L, B, T, **STRIP))
-    mass = 1025.0 * float(hs["volume"])
-    m = np.diag([mass, mass * (0.25 * L) ** 2])
-    c = np.array([[float(hs["c33"]), float(hs["c35"])], [float(hs["c35"]), float(hs["c55"])]])
+    m5, c5 = strip.rigid_body_matrices(strip.box(L, B, T, **STRIP), z_g=Z_G)
+    m = np.asarray(m5)[np.ix_([1, 3], [1, 3])]
+    c = np.asarray(c5)[np.ix_([1, 3], [1, 3])]
     dofs = ("Heave", "Pitch")
     out = []
     for w in RAO_OMEGA:
@@ -114,8 +117,8 @@ def main(argv=None):
     c, compile_s, strip_s = strip_side()
     cap, cap_s, cap_raos = capytaine_side(args.panel_size)
     strip_raos = np.asarray(
-        strip.heave_pitch_raos(strip.box(L, B, T, **STRIP), np.array(RAO_OMEGA), np.array([0.0]))
-    )[:, 0]
+        strip.motions(strip.box(L, B, T, **STRIP), np.array(RAO_OMEGA), [0.0], z_g=Z_G).rao
+    )[:, 0][:, [1, 3]]
     raos = [
         dict(
             omega=w,
@@ -135,6 +138,7 @@ def main(argv=None):
     result = dict(
         hull=dict(length=L, breadth=B, draft=T),
         strip=STRIP,
+        z_g=Z_G,
         panel_size=args.panel_size,
         omega=OMEGA,
         rows=rows,

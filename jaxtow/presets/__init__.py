@@ -35,7 +35,7 @@ these presets carries the list in ``Vessel.assumed`` and every dataset in its at
   C_B = 0.928 from the published m' gives a = 5.49 m, a rake at 42.3° to the horizontal,
   i.e. a waterline flare η = 47.7° at the bow and stern faces (`barge2_rake`).
 
-Modules: `_values` (the thesis's Barge 2 data and every documented estimate, `ASSUMPTIONS`),
+Modules: `_values` (re-exports `jaxtow._values`: the thesis's Barge 2 data and every documented estimate, `ASSUMPTIONS`),
 `_particulars` (a vessel from L, B, T, C_B by published regressions, and its skegs), `_barge2` (the
 built-in vessels, waterlines, towline, resistance model, sea states and tug),
 `_databases` (the shipped panel-method drift databases and `drift_source`, the one way to

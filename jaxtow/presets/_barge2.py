@@ -1,5 +1,5 @@
 """The built-in Barge 1 and Barge 2 of the thesis: vessels, waterlines, towline, resistance
-model, sea states and tug, built from the values of `jaxtow.presets._values`."""
+model, sea states and tug, built from the values of `jaxtow._values`."""
 
 from __future__ import annotations
 
@@ -7,12 +7,7 @@ import math
 
 from .._towline import Towline
 from .._units import Scales
-from .._vessel import Vessel
-from ..drift import QTF
-from ..drift._waterline import Waterline, mirror_half, waterline
-from ..resistance import CoefficientTable, SeaState, TowResistance, Tug, WaveDrift, tow_resistance
-from ._particulars import block_coefficient_from_mass, clarke_added_mass
-from ._values import (
+from .._values import (
     _TABLE_3_7,
     ASSUMPTIONS,
     BARGE2_BREADTH,
@@ -22,6 +17,11 @@ from ._values import (
     SEA_STATES,
     U_TUG_DEFAULT,
 )
+from .._vessel import Vessel
+from ..drift import QTF
+from ..drift._waterline import Waterline, mirror_half, waterline
+from ..resistance import CoefficientTable, SeaState, TowResistance, Tug, WaveDrift, tow_resistance
+from ._particulars import block_coefficient_from_mass, clarke_added_mass
 
 
 def barge2_scales(u_tug: float = U_TUG_DEFAULT, draft: float | None = None) -> Scales:

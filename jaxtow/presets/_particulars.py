@@ -8,8 +8,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .._values import _TABLE_3_7, ASSUMPTIONS
 from .._vessel import Vessel
-from ._values import _TABLE_3_7, ASSUMPTIONS
 
 
 def block_coefficient_from_mass(m_nd: float, length: float, breadth: float) -> float:

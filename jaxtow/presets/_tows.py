@@ -13,11 +13,11 @@ from __future__ import annotations
 import numpy as np
 
 from .._dynamics import TowModel
+from .._values import U_TUG_DEFAULT
 from ..forces import CombinedForce, IrregularWaveDriftForce, WaveDriftForce
 from ..waves import DEFAULT_OMEGA, Jonswap
 from ._barge2 import VESSELS, barge2_scales, default_towline
 from ._databases import drift_source
-from ._values import U_TUG_DEFAULT
 
 
 def _barge2_tow(version, l0, xp, u_tug, external, draft=None) -> TowModel:

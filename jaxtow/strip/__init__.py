@@ -4,7 +4,10 @@ interior lid against irregular frequencies), differentiable in the hull offsets.
 Numerics only (no plotting, no files). Modules: `_expint` (the complex exponential integral
 of the wave source, with its own derivative rule), `_sections` (the 2-D radiation and
 diffraction of a section, `section_coefficients`), `_hull` (hulls by stations, the box and
-Wigley hulls, offsets files, and the zero-speed strip integrals, `hull_coefficients`).
+Wigley hulls, offsets files, and the zero-speed strip integrals, `hull_coefficients`),
+`_motions` (Salvesen-Tuck-Faltinsen motions with forward speed, `motions`),
+`_resistance` (added resistance by Gerritsma-Beukelman, `added_resistance`, and a
+zero-speed drift table by the R-function method, `drift_qtf`).
 """
 
 from typing import TYPE_CHECKING
@@ -17,11 +20,23 @@ if TYPE_CHECKING:
         Hull as Hull,
         HullCoefficients as HullCoefficients,
         box as box,
-        heave_pitch_raos as heave_pitch_raos,
         hull_coefficients as hull_coefficients,
         hydrostatics as hydrostatics,
         offsets_file as offsets_file,
         wigley as wigley,
+    )
+    from ._motions import (
+        Motions as Motions,
+        default_radii as default_radii,
+        encounter_frequency as encounter_frequency,
+        motions as motions,
+        rigid_body_matrices as rigid_body_matrices,
+    )
+    from ._resistance import (
+        METHODS as METHODS,
+        AddedResistance as AddedResistance,
+        added_resistance as added_resistance,
+        drift_qtf as drift_qtf,
     )
     from ._sections import (
         LID_FRACTION as LID_FRACTION,
@@ -40,7 +55,15 @@ __all__ = [
     "hull_coefficients",
     "HullCoefficients",
     "hydrostatics",
-    "heave_pitch_raos",
+    "motions",
+    "Motions",
+    "encounter_frequency",
+    "default_radii",
+    "rigid_body_matrices",
+    "added_resistance",
+    "AddedResistance",
+    "drift_qtf",
+    "METHODS",
     "MODES",
 ]
 

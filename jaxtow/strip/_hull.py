@@ -35,6 +35,9 @@ class Hull(eqx.Module):
     y: Float[Array, "n m"]
     z: Float[Array, "n m"]
     name: str = eqx.field(static=True, default="hull")
+    #: whether the hull ends aft in a transom (the aftmost station's section, not a point):
+    #: the forward-speed end terms of Salvesen, Tuck & Faltinsen act there
+    transom: bool = eqx.field(static=True, default=False)
 
     def __check_init__(self):
         shape = jnp.shape(self.y)
@@ -72,7 +75,9 @@ def box(
     ys = np.r_[np.full(n_side + 1, breadth / 2), np.linspace(breadth / 2, 0.0, n_bottom + 1)[1:]]
     zs = np.r_[np.linspace(0.0, -draft, n_side + 1), np.full(n_bottom, -draft)]
     n = len(x)
-    return Hull(jnp.asarray(x), jnp.asarray(dx), jnp.tile(ys, (n, 1)), jnp.tile(zs, (n, 1)), "box")
+    return Hull(
+        jnp.asarray(x), jnp.asarray(dx), jnp.tile(ys, (n, 1)), jnp.tile(zs, (n, 1)), "box", True
+    )
 
 
 def wigley(
@@ -101,7 +106,8 @@ def offsets_file(path, *, n_points: int = 12) -> Hull:
     waterlines. Each station is resampled to ``n_points`` offsets between the waterline and
     the deepest waterline, and closed to the centreline at the keel. Stations whose breadth
     at the waterline is zero are left out (they carry no section); strips follow the
-    stations' spacing (half-way to each neighbour)."""
+    stations' spacing (half-way to each neighbour). The hull ends in a transom when the
+    first (aftmost) station of the file has breadth at the waterline and depth below it."""
     path = Path(path)
     with path.open(newline="") as fh:
         rows = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
@@ -142,6 +148,7 @@ def offsets_file(path, *, n_points: int = 12) -> Hull:
         jnp.asarray(ys),
         jnp.asarray(zz),
         path.stem,
+        bool(half[0, 0] > 0 and np.any(half[0, 1:] > 0)),
     )
 
 
@@ -159,26 +166,31 @@ class HullCoefficients(eqx.Module):
 
 
 def _section_wave_forces(y, z, potentials, omega, sin_chi, rho, g):
-    """Sway, heave and roll forces per unit length of a wave of unit amplitude travelling at
-    angle χ to the ship's x axis, on one section: X_j = −iωρ ∮ (φ₀ n_j − φ_j ∂φ₀/∂n) ds
-    (Froude-Krylov plus the diffraction of Salvesen, Tuck & Faltinsen 1970 through the
-    radiation potentials, the Haskind form of strip theory); φ₀ = −i(g/ω) e^{kz + iky sinχ}
-    on the section, the factor e^{ikx cosχ} left to the caller. At sinχ = 1 it is the 2-D
-    beam-sea diffraction force (tested against the direct solve)."""
+    """Sway, heave and roll forces per unit length of a wave of unit amplitude and frequency
+    ``omega`` travelling at angle χ to the ship's x axis, on one section, as (Froude-Krylov,
+    diffraction): X_j = −iωρ ∮ φ₀ n_j ds + iωρ ∮ φ_j ∂φ₀/∂n ds (the diffraction of Salvesen,
+    Tuck & Faltinsen 1970 through the radiation potentials ``potentials``, the Haskind form
+    of strip theory; at forward speed the potentials are those of the encounter frequency);
+    φ₀ = −i(g/ω) e^{kz + iky sinχ} on the section, the factor e^{ikx cosχ} left to the
+    caller. ``omega``, ``sin_chi`` (m,), ``potentials`` (m, panels, 3); returns two (m, 3).
+    At sinχ = 1 and zero speed the sum is the 2-D beam-sea diffraction force (tested against
+    the direct solve)."""
     _, _, mid, length, _, normal = _panels(y, z)
-    k = omega**2 / g  # (w,)
+    k = (omega**2 / g)[:, None]  # (m, 1)
+    s = sin_chi[:, None]
     pts = jnp.concatenate([mid, -jnp.conj(mid)])
     nrm = jnp.concatenate([normal, -jnp.conj(normal)])
     ln = jnp.concatenate([length, length])
     parity = jnp.array([-1.0, 1.0, -1.0])
-    phi = jnp.concatenate([potentials, potentials * parity], axis=-2)  # (w, 2n, 3)
+    phi = jnp.concatenate([potentials, potentials * parity], axis=-2)  # (m, 2n, 3)
     x, yy, nx, ny = pts.real, pts.imag, nrm.real, nrm.imag
     n_modes = jnp.stack([nx, ny, x * ny - yy * nx], axis=-1)  # (2n, 3)
-    kk = k[:, None]
-    phi0 = -1j * g / omega[:, None] * jnp.exp(kk * yy + 1j * kk * x * sin_chi)
-    dphi0 = phi0 * kk * (1j * sin_chi * nx + ny)
-    integrand = phi0[..., None] * n_modes - phi * dphi0[..., None]
-    return -1j * omega[:, None] * rho * jnp.sum(integrand * ln[:, None], axis=-2)
+    phi0 = -1j * g / omega[:, None] * jnp.exp(k * yy + 1j * k * x * s)
+    dphi0 = phi0 * k * (1j * s * nx + ny)
+    pre = -1j * omega[:, None] * rho
+    fk = pre * jnp.sum((phi0 * ln)[..., None] * n_modes, axis=-2)
+    diffraction = -pre * jnp.sum(phi * (dphi0 * ln)[..., None], axis=-2)
+    return fk, diffraction
 
 
 def _strip_matrix(sec, x, dx):
@@ -237,21 +249,25 @@ def hull_coefficients(
         return HullCoefficients(**out)
     beta = jnp.atleast_1d(jnp.asarray(beta, dtype=float))
     # the waves travel towards χ = β + π: cos χ = −cos β, sin χ = −sin β
-    per_heading = jax.vmap(
-        lambda sin_chi: jax.vmap(
-            lambda y, z, p: _section_wave_forces(y, z, p, omega, sin_chi, rho, g)
-        )(hull.y, hull.z, secs.potentials),
-        out_axes=2,
-    )(-jnp.sin(beta))  # (n, w, b, 3)
+    nw, nb = omega.shape[0], beta.shape[0]
+    w_flat = jnp.repeat(omega, nb)
+    sin_flat = jnp.tile(-jnp.sin(beta), nw)
+
+    def station(y, z, p):
+        fk, dif = _section_wave_forces(y, z, jnp.repeat(p, nb, axis=0), w_flat, sin_flat, rho, g)
+        return (fk + dif).reshape(nw, nb, 3)
+
+    per_heading = jax.vmap(station)(hull.y, hull.z, secs.potentials)  # (n, w, b, 3)
     k = omega**2 / g
     exciting = _strip_forces(per_heading, hull.x, hull.dx, -k[:, None] * jnp.cos(beta)[None])
     return HullCoefficients(**out, beta=beta, exciting=exciting)
 
 
 def hydrostatics(hull: Hull, *, rho: float = 1025.0, g: float = 9.80665) -> dict:
-    """Displacement ∇ [m³], centre of buoyancy (x_B, z_B) [m], and the heave-pitch restoring
-    C33 = ρg∫B dx, C35 = −ρg∫xB dx, C55 = ρg∫x²B dx [N/m, N, N m] from the stations (the
-    waterplane by the strips; C55 without the small ρg∇(z_B − z_G))."""
+    """Displacement ∇ [m³], centre of buoyancy (x_B, z_B) [m], and the waterplane's restoring
+    C33 = ρg∫B dx, C35 = −ρg∫xB dx, C55 = ρg∫x²B dx, C44 = ρg∫B³/12 dx [N/m, N, N m, N m]
+    from the stations (the waterplane by the strips; C44 and C55 without ρg∇(z_B − z_G),
+    which needs the centre of gravity)."""
     y, z = hull.y, hull.z
     cross = y[:, :-1] * z[:, 1:] - y[:, 1:] * z[:, :-1]  # shoelace terms of the half contour
     area = jnp.abs(jnp.sum(cross, axis=1))  # both halves: 2 × ½ |Σ|
@@ -265,28 +281,5 @@ def hydrostatics(hull: Hull, *, rho: float = 1025.0, g: float = 9.80665) -> dict
         c33=rho * g * jnp.sum(b * hull.dx),
         c35=-rho * g * jnp.sum(hull.x * b * hull.dx),
         c55=rho * g * jnp.sum(hull.x**2 * b * hull.dx),
+        c44=rho * g * jnp.sum(b**3 / 12.0 * hull.dx),
     )
-
-
-def heave_pitch_raos(
-    hull: Hull, omega, beta, *, k_yy=None, rho: float = 1025.0, g: float = 9.80665
-):
-    """Heave [m/m] and pitch [rad/m] RAOs at zero speed, (w, b, 2) complex, per unit wave
-    amplitude at midships: [−ω²(M + A) − iωB + C] η = F over heave and pitch, with the mass
-    ρ∇ at the centre of buoyancy's x and the pitch radius of gyration ``k_yy`` [m] (default
-    0.25 L, `jaxtow.presets` radii) about the waterline at midships."""
-    c = hull_coefficients(hull, omega, beta, rho=rho, g=g)
-    hs = hydrostatics(hull, rho=rho, g=g)
-    length = jnp.sum(hull.dx)
-    k_yy = 0.25 * length if k_yy is None else k_yy
-    mass = rho * hs["volume"]
-    m = jnp.array([[mass, -mass * hs["x_b"]], [-mass * hs["x_b"], mass * k_yy**2]])
-    cmat = jnp.array([[hs["c33"], hs["c35"]], [hs["c35"], hs["c55"]]])
-    idx = jnp.array([1, 3])
-    a = c.added_mass[:, idx][:, :, idx]
-    bm = c.damping[:, idx][:, :, idx]
-    w = c.omega[:, None, None]
-    h = -(w**2) * (m + a) - 1j * w * bm + cmat  # (w, 2, 2)
-    assert c.exciting is not None  # headings were given
-    f = c.exciting[..., idx]  # (w, b, 2)
-    return jnp.linalg.solve(h[:, None], f[..., None])[..., 0]

@@ -1,0 +1,144 @@
+"""Strip theory with forward speed: the Salvesen-Tuck-Faltinsen coefficients against their
+zero-speed integrals and their published speed terms, the encounter frequency, the added
+resistance by radiated energy, the strip drift table, gradients and bad input."""
+
+import jax
+import numpy as np
+import pytest
+
+import jaxtow as jt
+import jaxtow.strip as S
+
+G = 9.80665
+
+
+@pytest.fixture(scope="module")
+def wigley():
+    return S.wigley(3.0, 0.3, 0.1875, n_stations=12, n_points=8)
+
+
+def test_encounter_frequency():
+    w = np.array([0.5, 1.0])
+    assert np.allclose(S.encounter_frequency(w, 0.0, 2.0), w + w**2 / G * 2.0)  # head seas
+    assert np.allclose(S.encounter_frequency(w, np.pi, 2.0), w - w**2 / G * 2.0)
+    assert np.allclose(S.encounter_frequency(w, np.pi / 2, 2.0), w)
+
+
+@pytest.mark.slow
+def test_zero_speed_motions_use_the_zero_speed_strip_integrals(wigley):
+    om = np.array([4.0, 6.0])
+    m = S.motions(wigley, om, [0.0, np.pi / 3])
+    c = S.hull_coefficients(wigley, om, [0.0, np.pi / 3])
+    for j in range(2):
+        assert np.allclose(m.added_mass[:, j], c.added_mass, rtol=1e-9, atol=1e-12)
+        assert np.allclose(m.damping[:, j], c.damping, rtol=1e-9, atol=1e-12)
+    assert np.allclose(m.exciting, c.exciting, rtol=1e-9, atol=1e-12)
+    assert np.allclose(m.omega_e, om[:, None])
+
+
+@pytest.mark.slow
+def test_forward_speed_terms_are_salvesen_tuck_faltinsen(wigley):
+    """A hull without a transom: A35 − A53 = −2(U/ω_e²) B33⁰, B35 − B53 = 2U A33⁰,
+    A55(U) − A55(0) = (U²/ω_e²) A33⁰, B55(U) − B55(0) = (U²/ω_e²) B33⁰, and the same in the
+    lateral plane with the opposite lever (A26 − A62 = 2(U/ω_e²) B22⁰); heave, sway and roll
+    are as at zero speed. Compared at the same encounter frequency: beam seas, where
+    ω_e = ω."""
+    om, u = np.array([5.0]), 0.6
+    m = S.motions(wigley, om, [np.pi / 2], u)
+    c = S.hull_coefficients(wigley, om)
+    a, b = np.asarray(m.added_mass)[0, 0], np.asarray(m.damping)[0, 0]
+    a0, b0 = np.asarray(c.added_mass)[0], np.asarray(c.damping)[0]
+    w2 = om[0] ** 2
+    assert a[1, 1] == pytest.approx(a0[1, 1], rel=1e-9)
+    assert b[0, 0] == pytest.approx(b0[0, 0], rel=1e-9)
+    assert a[1, 3] - a[3, 1] == pytest.approx(-2 * u / w2 * b0[1, 1], rel=1e-8)
+    assert b[1, 3] - b[3, 1] == pytest.approx(2 * u * a0[1, 1], rel=1e-8)
+    assert a[3, 3] - a0[3, 3] == pytest.approx(u**2 / w2 * a0[1, 1], rel=1e-8)
+    assert b[3, 3] - b0[3, 3] == pytest.approx(u**2 / w2 * b0[1, 1], rel=1e-8)
+    assert a[0, 4] - a[4, 0] == pytest.approx(2 * u / w2 * b0[0, 0], rel=1e-8)
+    assert b[0, 4] - b[4, 0] == pytest.approx(-2 * u * a0[0, 0], rel=1e-8)
+
+
+@pytest.mark.slow
+def test_transom_terms_act_on_a_box():
+    """The box ends in a transom: B33(U) − B33(0) = U a33(x_A), A33(U) − A33(0) =
+    −(U/ω_e²) b33(x_A) (STF's end terms), with x_A the stern."""
+    hull = S.box(76.2, 24.4, 5.0, n_stations=7)
+    om, u = np.array([0.7]), 3.0
+    m = S.motions(hull, om, [np.pi / 2], u)
+    c = S.hull_coefficients(hull, om)
+    sec = S.section_coefficients(hull.y[0], hull.z[0], om)
+    a_a, b_a = float(sec.added_mass[0, 1, 1]), float(sec.damping[0, 1, 1])
+    assert float(m.damping[0, 0, 1, 1] - c.damping[0, 1, 1]) == pytest.approx(u * a_a, rel=1e-8)
+    assert float(m.added_mass[0, 0, 1, 1] - c.added_mass[0, 1, 1]) == pytest.approx(
+        -u / om[0] ** 2 * b_a, rel=1e-8
+    )
+
+
+@pytest.mark.slow
+def test_head_sea_added_resistance_is_positive_and_peaks_near_resonance(wigley):
+    om = np.linspace(3.0, 9.0, 13)
+    ar = S.added_resistance(wigley, om, [0.0], 0.9, z_g=0.0)
+    r = np.asarray(ar.r)[:, 0]
+    assert np.all(r > 0)
+    peak = int(np.argmax(r))
+    assert 0 < peak < len(om) - 1  # a peak inside the range
+    # where the waves are about as long as the hull (the heave-pitch resonance in head seas)
+    wavelength = 2 * np.pi * G / om[peak] ** 2
+    assert 0.7 < wavelength / 3.0 < 2.0
+    # beam seas: no added resistance from vertical motions
+    beam = S.added_resistance(wigley, om[:3], [np.pi / 2], 0.9)
+    assert np.max(np.abs(np.asarray(beam.r))) < 1e-9 * r.max()
+
+
+@pytest.mark.slow
+def test_strip_drift_table_is_a_qtf_with_the_short_wave_limit():
+    """The zero-speed strip drift table of the box: a `QTF` (consumers interpolate it); in
+    short head waves it tends to Faltinsen's wall limit ½ρgB plus the vanishing radiated
+    part; in long waves to the radiated part alone."""
+    hull = S.box(76.2, 24.4, 5.0, n_stations=11)
+    wl = jt.presets.box_waterline(draft=5.0)
+    om = np.array([0.3, 0.5, 2.5])
+    q = S.drift_qtf(hull, wl, om, np.linspace(0.0, np.pi, 5))
+    assert isinstance(q, jt.drift.QTF)
+    fx_short = float(np.asarray(q(2.5, 0.0))[0])
+    wall = 0.5 * 1025.0 * G * 24.4
+    assert fx_short < 0 and abs(fx_short) == pytest.approx(wall, rel=0.1)
+    ar = S.added_resistance(hull, om[:1], [0.0])
+    assert float(np.asarray(q(0.3, 0.0))[0]) == pytest.approx(-float(ar.r[0, 0]), rel=0.05)
+    assert float(np.asarray(q(0.5, np.pi / 2))[1]) < 0  # waves from port push to starboard
+
+
+@pytest.mark.slow
+def test_added_resistance_gradient_against_finite_differences(wigley):
+    """d R_AW / d(half-breadths scale) by jax.grad equals central differences (1e-5)."""
+    om = np.array([5.5])
+
+    def r_of(s):
+        h = S.Hull(wigley.x, wigley.dx, wigley.y * s, wigley.z, "w", False)
+        return S.added_resistance(h, om, [0.0], 0.6).r[0, 0]
+
+    g = float(jax.grad(r_of)(1.0))
+    eps = 1e-5
+    fd = float((r_of(1.0 + eps) - r_of(1.0 - eps)) / (2 * eps))
+    assert g == pytest.approx(fd, rel=1e-5)
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        (dict(omega=[-1.0]), "omega"),
+        (dict(u=-1.0), "'u'"),
+        (dict(roll_damping=1.5), "roll_damping"),
+        (dict(radii=(1.0, 0.0, 1.0)), "radii"),
+    ],
+)
+def test_bad_motion_input_is_named(kwargs, match):
+    hull = S.box(10.0, 4.0, 1.0, n_stations=3, n_side=2, n_bottom=2)
+    args = dict(omega=[1.0], beta=[0.0], u=0.0) | kwargs
+    with pytest.raises(ValueError, match=match):
+        S.motions(hull, args.pop("omega"), args.pop("beta"), args.pop("u"), **args)
+    with pytest.raises(ValueError, match="method"):
+        S.added_resistance(hull, [1.0], [0.0], method="salvesen")
+    with pytest.raises(TypeError, match="hull"):
+        S.motions("box", [1.0], [0.0])
