@@ -49,6 +49,7 @@ from .._lazy import attach as _attach
 if TYPE_CHECKING:
     from ._barge2 import (
         VESSELS as VESSELS,
+        barge2_hull as barge2_hull,
         barge2_rake as barge2_rake,
         barge2_resistance as barge2_resistance,
         barge2_scales as barge2_scales,
@@ -133,6 +134,7 @@ __all__ = [
     "barge2_rake",
     "box_waterline",
     "barge2_waterline",
+    "barge2_hull",
     "barge_2a",
     "barge_2b",
     "VESSELS",

@@ -21,6 +21,7 @@ from .._vessel import Vessel
 from ..drift import QTF
 from ..drift._waterline import Waterline, mirror_half, waterline
 from ..resistance import CoefficientTable, SeaState, TowResistance, Tug, WaveDrift, tow_resistance
+from ..strip import raked_box
 from ._particulars import block_coefficient_from_mass, clarke_added_mass
 
 
@@ -66,6 +67,13 @@ def barge2_waterline(draft: float | None = None) -> Waterline:
     return waterline(
         pts, draft=r["draft"], flare=fl, block_coefficient=r["block_coefficient"], name="barge2"
     )
+
+
+def barge2_hull(draft: float | None = None, *, n_stations: int = 21):
+    """Barge 2 for strip theory (`jaxtow.strip.raked_box`): 76.2 × 24.4 m with the raked bow
+    and stern of `barge2_rake` (the same hull as the panel pipeline's `barge2_mesh`)."""
+    r = barge2_rake(draft)
+    return raked_box(BARGE2_LENGTH, BARGE2_BREADTH, r["draft"], r["extent"], n_stations=n_stations)
 
 
 def _barge2(version: str, draft: float | None) -> Vessel:

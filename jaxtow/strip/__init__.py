@@ -23,6 +23,7 @@ if TYPE_CHECKING:
         hull_coefficients as hull_coefficients,
         hydrostatics as hydrostatics,
         offsets_file as offsets_file,
+        raked_box as raked_box,
         wigley as wigley,
     )
     from ._motions import (
@@ -50,6 +51,7 @@ __all__ = [
     "LID_FRACTION",
     "Hull",
     "box",
+    "raked_box",
     "wigley",
     "offsets_file",
     "hull_coefficients",

@@ -80,6 +80,31 @@ def box(
     )
 
 
+def raked_box(
+    length: float,
+    breadth: float,
+    draft: float,
+    rake: float,
+    *,
+    n_stations: int = 21,
+    n_side: int = 6,
+    n_bottom: int = 6,
+) -> Hull:
+    """A barge with a rectangular L × B waterline whose bow and stern faces run straight from
+    the waterline (x = ±L/2) down to the keel at x = ±(L/2 − ``rake``): rectangular sections
+    B × d(x), d = T min(1, (L/2 − |x|)/rake) (the hull of `jaxtow.bem.meshes.raked_barge_mesh`;
+    Barge 2 with `jaxtow.presets.barge2_hull`). The raked ends close at the waterline, so
+    the hull has no transom (``rake = 0`` is `box`, which has)."""
+    if rake == 0:
+        return box(length, breadth, draft, n_stations=n_stations, n_side=n_side, n_bottom=n_bottom)
+    if not (0 < rake < 0.5 * length):
+        raise ValueError(f"parameter 'rake' must lie in [0, length/2), got {rake!r}")
+    hull = box(length, breadth, draft, n_stations=n_stations, n_side=n_side, n_bottom=n_bottom)
+    depth = draft * np.minimum(1.0, (0.5 * length - np.abs(np.asarray(hull.x))) / rake)
+    z = np.asarray(hull.z) * (depth / draft)[:, None]
+    return Hull(hull.x, hull.dx, hull.y, jnp.asarray(z), "raked_box", False)
+
+
 def wigley(
     length: float, breadth: float, draft: float, *, n_stations: int = 21, n_points: int = 12
 ) -> Hull:

@@ -88,7 +88,7 @@ def _frequency_grid(omega_e, n, floor):
     ``floor``); with the linear-interpolation index and weight of every |ω_e|."""
     mag = np.abs(np.asarray(omega_e, float)).ravel()
     lo, hi = max(mag.min(), floor), max(mag.max(), floor * 1.01)
-    grid = np.unique(mag) if np.unique(mag).size <= n else np.geomspace(lo, hi, n)
+    grid = np.unique(mag) if n is None or np.unique(mag).size <= n else np.geomspace(lo, hi, n)
     grid = np.maximum(grid, floor)
     if grid.size == 1:
         grid = np.array([grid[0], grid[0] * 1.01])
@@ -179,7 +179,8 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     w_flat = jnp.repeat(omega, beta.shape[0])
     b_flat = jnp.tile(beta, omega.shape[0])
     we = encounter_frequency(w_flat, b_flat, u, g)
-    a, b, pots, inside = _sections_at(hull, np.asarray(we), n_encounter, rho, g)
+    n_grid = None if u == 0 else n_encounter  # at zero speed: the frequencies themselves
+    a, b, pots, inside = _sections_at(hull, np.asarray(we), n_grid, rho, g)
     c = 1j * u / we
     t = we[None, :, None, None] ** 2 * a + 1j * we[None, :, None, None] * b
     tm = _radiation(t, hull.x, hull.dx, c, hull.transom)  # (m, 5, 5)
@@ -198,6 +199,14 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     return dict(we=we, rao=rao, added=added, damping=damping, f=f, valid=valid, fk3=fk3, a=a, b=b)
 
 
+def _traced(x) -> bool:
+    try:
+        float(x)
+    except (TypeError, jax.errors.ConcretizationTypeError):
+        return True
+    return False
+
+
 def _inputs(hull, omega, beta, u, radii, roll_damping):
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
     beta = np.atleast_1d(np.asarray(beta, dtype=float))
@@ -211,7 +220,7 @@ def _inputs(hull, omega, beta, u, radii, roll_damping):
         raise ValueError(
             f"parameter 'roll_damping' (fraction of critical) must lie in [0, 1), got {roll_damping!r}"
         )
-    concrete = [r for r in radii if not isinstance(r, jax.core.Tracer)]
+    concrete = [r for r in radii if not isinstance(r, jax.Array) or not _traced(r)]
     if len(radii) != 3 or not all(np.isfinite(r) and r > 0 for r in concrete):
         raise ValueError(f"parameter 'radii' must be three radii of gyration > 0, got {radii!r}")
     return jnp.asarray(omega), jnp.asarray(beta)
@@ -269,8 +278,9 @@ def motions(
     linear viscous roll damping as a fraction of critical (default
     `jaxtow.ASSUMPTIONS['roll_damping']`, an estimate). The sections are solved at
     ``n_encounter`` encounter frequencies spanning the table and interpolated linearly
-    (at zero speed, and wherever the table has that few distinct encounter frequencies, at
-    the frequencies themselves). ``omega``, ``beta`` and ``u`` are data (not traced);
+    (at zero speed, or where the table has no more distinct encounter frequencies, at the
+    frequencies themselves); frequencies below 0.3√(g/L) are held there and marked
+    invalid. ``omega``, ``beta`` and ``u`` are data (not traced);
     the result is differentiable in the hull's offsets and the mass properties."""
     return _motions(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g)[0]
 

@@ -70,7 +70,7 @@ def _gerritsma_beukelman(hull: Hull, m: Motions, internals, rho, g):
     v = -1j * we * (eta3 - x * eta5) + m.u * eta5 + 1j * w * zeta
     a33 = internals["a"][..., 1, 1]
     b33 = internals["b"][..., 1, 1]
-    da_dx = jnp.gradient(a33, hull.x, axis=0)
+    da_dx = jnp.asarray(jnp.gradient(a33, hull.x, axis=0))
     b_eff = b33 - m.u * da_dx
     power = jnp.sum(hull.dx[:, None] * b_eff * jnp.abs(v) ** 2, axis=0)  # 2 × mean power
     return k * jnp.cos(beta) * power / (2.0 * jnp.abs(we))

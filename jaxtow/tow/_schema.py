@@ -119,7 +119,8 @@ SCHEMA: dict[str, dict[str, Key]] = {
             "table",
             "wave-drift source: a shipped panel database (barge1:far_field, "
             "barge2:near_field, ...), standin, a waterline method (kashiwagi, faltinsen, "
-            "...) on the waterline, or a drift file as a path or {file = PATH, ulen = ..., "
+            "...) on the waterline, strip (strip theory of the box or barge2 waterline's "
+            "hull; {strip = OFFSETS_FILE} for another), or a drift file as a path or {file = PATH, ulen = ..., "
             "rho = ..., g = ..., reference_point = ..., symmetry = ..., moment_set = ...}",
         ),
         mesh=Key(

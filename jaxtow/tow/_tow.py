@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .. import bem, guidelines, lines, presets
+from .. import bem, guidelines, lines, presets, strip
 from .._dynamics import TowModel
 from .._simulate import initial_state
 from .._towline import Bridle, CatenaryTowline, Towline
@@ -160,6 +160,8 @@ class Tow:
             spec = self.drift_spec
             if isinstance(spec, dict) and "mesh" in spec:
                 self._cache["drift"] = _mesh_drift(spec, self.resolved["hull"]["sailing_form"])
+            elif isinstance(spec, dict) and "strip" in spec:
+                self._cache["drift"] = _strip_drift(spec["strip"], self.waterline)
             elif isinstance(spec, str) and spec in METHODS:
                 q = qtf_from_method(spec, self.waterline, QTF_OMEGA, _radians(QTF_BETA_DEG))
                 desc = (
@@ -594,6 +596,8 @@ def _drift(p: Problems, h: dict, preset: bool, base, T: float, assumed: list):
             )
     if isinstance(drift, dict) and "mesh" in drift:
         return drift
+    if drift == "strip" or (isinstance(drift, dict) and "strip" in drift):
+        return _strip_spec(p, h, drift, base)
     if isinstance(drift, dict):
         if "file" not in drift:
             p.error(("hull", "drift"), "a drift-file table needs file = PATH")
@@ -604,6 +608,22 @@ def _drift(p: Problems, h: dict, preset: bool, base, T: float, assumed: list):
     if isinstance(drift, str) and drift not in METHODS:
         return _named_drift(p, drift, base)
     return drift
+
+
+def _strip_spec(p: Problems, h: dict, drift, base) -> dict:
+    """drift = "strip" (the box or Barge 2 of the waterline) or {strip = OFFSETS_FILE}."""
+    if drift == "strip":
+        if h["waterline"] not in ("box", "barge2"):
+            p.error(
+                ("hull", "drift"),
+                "drift = 'strip' needs waterline = 'box' or 'barge2' (the hull of the strips); "
+                "for another hull give {strip = OFFSETS_FILE}",
+            )
+        return {"strip": h["waterline"]}
+    path = _path(drift["strip"], base)
+    if not path.is_file():
+        p.error(("hull", "drift"), f"no such offsets file for the strips: {path}")
+    return {"strip": str(path)}
 
 
 def _named_drift(p: Problems, drift: str, base) -> str:
@@ -958,6 +978,30 @@ def _mesh_drift(spec: dict, form: str):
     return q, desc
 
 
+def _strip_drift(hull_spec: str, wl):
+    """(QTF, description) of strip theory (`jaxtow.strip.drift_qtf`) for the box or Barge 2
+    of the waterline, or an offsets file, with the panel pipeline's CoG estimate."""
+    T = float(wl.draft)
+    if hull_spec == "box":
+        pts = np.asarray(wl.points)
+        hull = strip.box(float(np.ptp(pts[:, 0])), float(np.ptp(pts[:, 1])), T)
+    elif hull_spec == "barge2":
+        hull = presets.barge2_hull(T)
+    else:
+        try:
+            hull = strip.offsets_file(hull_spec)
+        except ValueError as e:
+            raise TowFileError(f"[hull] drift: {e}") from None
+    z_g = float(presets.ASSUMPTIONS["cog_z"]["value"]) - T
+    q = strip.drift_qtf(hull, wl, QTF_OMEGA, _radians(QTF_BETA_DEG), z_g=z_g)
+    desc = (
+        f"strip theory of the {hull.name} hull ({hull.x.shape[0]} sections): Gerritsma-"
+        f"Beukelman added resistance plus the R-function short-wave part on the {wl.name} "
+        f"waterline; CoG {z_g:g} m above the waterline (estimate); zero-speed table"
+    )
+    return q, desc
+
+
 def _path(name, base) -> Path:
     path = Path(name)
     return path if path.is_absolute() or base is None else Path(base) / path
@@ -982,6 +1026,14 @@ def _describe_drift(drift, form) -> str:
             f"panel solve of mesh {drift['mesh']} ({drift['method']}; CoG height, radii of "
             "gyration and roll damping: the documented estimates of jaxtow.presets.ASSUMPTIONS "
             "unless cog_z is given)"
+        )
+    if isinstance(drift, dict) and "strip" in drift:
+        return (
+            f"strip theory of the {drift['strip']} hull at zero speed (Gerritsma-Beukelman plus "
+            "the R-function short-wave part; no lateral motion-induced drift; on a barge it "
+            "over-predicts the panel method's surge drift in waves longer than the hull, see "
+            "docs/strip.md; CoG height, radii of gyration and roll damping: the documented "
+            f"estimates; {form} sailing form)"
         )
     what = drift if isinstance(drift, str) else f"file {drift['file']}"
     return f"drift source {what} ({form} sailing form)"
