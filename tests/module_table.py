@@ -30,7 +30,7 @@ LAYER_NAMES = {
     "jaxtow.io": "files",
 }
 CORE = ("_units", "_roots", "_interp", "_special", "_compile_cache", "_progress", "_rules")
-CORE += ("_config", "_lazy")
+CORE += ("_config", "_lazy", "_values")
 
 
 def _contract_modules() -> list[str]:

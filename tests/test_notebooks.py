@@ -21,6 +21,11 @@ EXPECTED = {
         "with_parameters:  parameter 'coefficient' must be >= 0",
         "traced:           parameter 'coefficient' must be >= 0",
     ],
+    "05_strip_bow_rake.ipynb": [
+        "dR/d(bow rake): autodiff",
+        "central difference",
+        "bow rake 5.49 m ->",
+    ],
 }
 
 

@@ -62,12 +62,19 @@ def test_offsets_file_reads_a_box(tmp_path):
     assert hull.name == "box" and hull.y.shape == (22, 10)
     assert float(jnp.sum(hull.dx)) == pytest.approx(76.2)
     assert np.allclose(np.asarray(hull.x), xs)
-    # each station: the side at half-breadth 12.2 m from the waterline to the keel, then
-    # closed to the centreline along the keel
+    # each station: the side at half-breadth 12.2 m from the waterline to the bilge, then
+    # the bottom at 5 m to the centreline, with the bilge corner kept as a panel end
+    _assert_box_sections(hull, 12.2, 5.0)
+
+
+def _assert_box_sections(hull, half, draft):
     y, z = np.asarray(hull.y), np.asarray(hull.z)
-    assert np.allclose(y[:, :-1], 12.2) and np.allclose(y[:, -1], 0.0)
-    assert np.allclose(z[:, 0], 0.0) and np.allclose(z[:, -2:], -5.0)
-    assert np.all(np.diff(z, axis=1) <= 0)
+    side = np.isclose(y, half)
+    bottom = np.isclose(z, -draft)
+    assert np.all(side | bottom)  # every offset on the side or the bottom
+    assert np.all(np.any(side & bottom, axis=1))  # the corner in every section
+    assert np.allclose(z[:, 0], 0.0) and np.allclose(y[:, -1], 0.0)
+    assert np.all(np.diff(z, axis=1) <= 0) and np.all(np.diff(y, axis=1) <= 0)
 
 
 @pytest.mark.parametrize(
@@ -166,3 +173,67 @@ def test_box_hydrostatics_and_long_wave_raos():
     # long beam waves: the box heaves with the wave and rolls with its slope
     assert np.allclose(np.abs(r[:, 1, 1]), 1.0, rtol=2e-3)
     assert np.allclose(np.abs(r[:, 1, 2]), k, rtol=0.05)
+
+
+def test_lewis_sections_have_their_particulars():
+    """A Lewis form has the beam, draft and area coefficient it was asked for; σ = π/4 at
+    B/2T = 1 is the semicircle; an impossible σ is refused by name."""
+    y, z = S.lewis_section(2.0, 1.0, np.pi / 4, n_points=9)
+    assert np.allclose(np.hypot(np.asarray(y), np.asarray(z)), 1.0, atol=1e-12)
+    for h0, sigma in [(2.0, 0.9), (1.0, 0.95), (0.5, 0.6), (3.0, 0.7)]:
+        y, z = (np.asarray(v) for v in S.lewis_section(2 * h0, 1.0, sigma, n_points=201))
+        assert y[0] == pytest.approx(h0) and z[-1] == pytest.approx(-1.0) and y[-1] == 0.0
+        area = abs(np.sum(y[:-1] * z[1:] - y[1:] * z[:-1]))  # both halves by the shoelace
+        assert area / (2 * h0) == pytest.approx(sigma, rel=2e-4)
+    with pytest.raises(ValueError, match="sigma"):
+        S.lewis_section(2.0, 1.0, 1.2)
+    hull = S.lewis_hull([-1.0, 0.0, 1.0], 1.0, [1.0, 2.0, 1.0], 1.0, [0.8, 0.9, 0.8], n_points=7)
+    assert hull.y.shape == (3, 7) and float(hull.y[1, 0]) == pytest.approx(1.0)
+
+
+@pytest.mark.slow
+def test_lewis_semicircle_coefficients_are_the_circle_s():
+    """The Lewis semicircle solved by the close-fit method gives the circle's coefficients
+    (the same contour, its points spaced alike in angle)."""
+    om = np.array([0.8, 1.5])
+    t = np.linspace(0.5 * np.pi, 0.0, 17)
+    circle = S.section_coefficients(np.sin(t), -np.cos(t), om)
+    y, z = S.lewis_section(2.0, 1.0, np.pi / 4, n_points=17)
+    lewis = S.section_coefficients(y, z, om)
+    assert np.allclose(lewis.added_mass, circle.added_mass, rtol=0.02, atol=1.0)
+
+
+def test_mesh_hull_cuts_the_panel_meshes_into_the_strip_hulls():
+    """The mesh → offsets path: the box mesh gives the box's sections (B/2 at every height,
+    draft T, a transom), the Barge 2 mesh the raked hull of `presets.barge2_hull` (same
+    stations, depths and volume, no transom)."""
+    from jaxtow import presets
+    from jaxtow.bem import barge2_mesh, box_barge_mesh, mesh_hull
+
+    box = mesh_hull(box_barge_mesh(76.2, 24.4, 5.0, panel_size=2.0))
+    assert box.transom and box.y.shape == (21, 12)
+    _assert_box_sections(box, 12.2, 5.0)
+    assert float(S.hydrostatics(box)["volume"]) == pytest.approx(76.2 * 24.4 * 5.0, rel=1e-9)
+    raked, ref = mesh_hull(barge2_mesh(5.0)), presets.barge2_hull(5.0)
+    assert not raked.transom
+    assert np.allclose(np.asarray(raked.x), np.asarray(ref.x))
+    assert np.allclose(np.asarray(raked.z)[:, -1], np.asarray(ref.z)[:, -1], rtol=1e-6)
+    assert float(S.hydrostatics(raked)["volume"]) == pytest.approx(
+        float(S.hydrostatics(ref)["volume"]), rel=1e-9
+    )
+    with pytest.raises(ValueError, match="n_stations"):
+        mesh_hull(box_barge_mesh(76.2, 24.4, 5.0), n_stations=1)
+
+
+def test_mesh_and_offsets_file_give_the_same_sections(tmp_path):
+    """The two roads from a hull description to the strips meet: the box read from its panel
+    mesh and from an offsets table has the same offsets (`contour` on both)."""
+    from jaxtow.bem import box_barge_mesh, mesh_hull
+
+    mesh = mesh_hull(box_barge_mesh(76.2, 24.4, 5.0), n_stations=5)
+    path = tmp_path / "box.csv"
+    rows = ["x,0,-2.5,-5"] + [f"{x},12.2,12.2,12.2" for x in np.asarray(mesh.x)]
+    path.write_text("\n".join(rows) + "\n")
+    table = S.offsets_file(path)
+    assert np.allclose(np.asarray(mesh.y), np.asarray(table.y), atol=1e-9)
+    assert np.allclose(np.asarray(mesh.z), np.asarray(table.z), atol=1e-9)

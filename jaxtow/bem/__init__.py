@@ -12,6 +12,8 @@ panel code Delfrac; jaxtow uses the open BEM solver Capytaine. What this package
   momentum formula) and near-field (Pinkster pressure integration, with its parts I-IV and
   the sectional moments of thesis eqs 2.43-2.48) mean drift, cached per frequency to NetCDF;
 * `qtf_from_bem` / `box_barge_drift`: jaxtow `QTF` databases for the tow models;
+* `mesh_hull`: the stations of strip theory (`jaxtow.strip.Hull`) cut from a mesh, so
+  that both methods run on the same hull;
 * `mesh_convergence` (thesis appendix B.1) and `reference.cylinder_drift`, the exact mean
   drift on a bottom-mounted vertical cylinder (MacCamy & Fuchs) for validation;
 * command line: ``jaxtow bem CONFIG|barge1|barge2 --out DIR``.
@@ -26,6 +28,7 @@ from . import (
     capytaine_mesh as capytaine_mesh,
     convergence as convergence,
     database as database,
+    offsets as offsets,
     reference as reference,
     solve as solve,
     summary as summary,
@@ -53,6 +56,7 @@ from .meshes import (
     raked_barge_mesh as raked_barge_mesh,
     vertical_cylinder_mesh as vertical_cylinder_mesh,
 )
+from .offsets import mesh_hull as mesh_hull
 from .solve import far_field_drift as far_field_drift, solve_frequency as solve_frequency
 
 
@@ -86,4 +90,5 @@ __all__ = [
     "solve_frequency",
     "symmetric_capytaine_mesh",
     "far_field_drift",
+    "mesh_hull",
 ]

@@ -84,25 +84,89 @@ def raked_box(
     length: float,
     breadth: float,
     draft: float,
-    rake: float,
+    rake,
     *,
+    bow_rake=None,
     n_stations: int = 21,
     n_side: int = 6,
     n_bottom: int = 6,
 ) -> Hull:
-    """A barge with a rectangular L × B waterline whose bow and stern faces run straight from
-    the waterline (x = ±L/2) down to the keel at x = ±(L/2 − ``rake``): rectangular sections
-    B × d(x), d = T min(1, (L/2 − |x|)/rake) (the hull of `jaxtow.bem.meshes.raked_barge_mesh`;
-    Barge 2 with `jaxtow.presets.barge2_hull`). The raked ends close at the waterline, so
-    the hull has no transom (``rake = 0`` is `box`, which has)."""
-    if rake == 0:
+    """A barge with a rectangular L × B waterline whose stern and bow faces run straight from
+    the waterline (x = ∓L/2) down to the keel at x = ∓(L/2 − rake): rectangular sections
+    B × d(x), d = T min(1, (L/2 + x)/rake, (L/2 − x)/bow_rake) (``bow_rake`` defaults to
+    ``rake``; the hull of `jaxtow.bem.meshes.raked_barge_mesh`; Barge 2 with
+    `jaxtow.presets.barge2_hull`). The raked ends close at the waterline, so the hull has no
+    transom (``rake = 0`` at both ends is `box`, which has). Differentiable in the rakes."""
+    bow_rake = rake if bow_rake is None else bow_rake
+    if _concrete(rake) and _concrete(bow_rake) and float(rake) == 0 and float(bow_rake) == 0:
         return box(length, breadth, draft, n_stations=n_stations, n_side=n_side, n_bottom=n_bottom)
-    if not (0 < rake < 0.5 * length):
-        raise ValueError(f"parameter 'rake' must lie in [0, length/2), got {rake!r}")
+    for name, v in (("rake", rake), ("bow_rake", bow_rake)):
+        if _concrete(v) and not (0 < float(v) < length):
+            raise ValueError(f"parameter {name!r} must lie in (0, length), got {float(v)!r}")
     hull = box(length, breadth, draft, n_stations=n_stations, n_side=n_side, n_bottom=n_bottom)
-    depth = draft * np.minimum(1.0, (0.5 * length - np.abs(np.asarray(hull.x))) / rake)
-    z = np.asarray(hull.z) * (depth / draft)[:, None]
-    return Hull(hull.x, hull.dx, hull.y, jnp.asarray(z), "raked_box", False)
+    x = hull.x
+    depth = draft * jnp.minimum(
+        1.0, jnp.minimum((0.5 * length + x) / rake, (0.5 * length - x) / bow_rake)
+    )
+    z = hull.z * (depth / draft)[:, None]
+    return Hull(hull.x, hull.dx, hull.y, z, "raked_box", False)
+
+
+def _concrete(v) -> bool:
+    """Whether ``v`` has a value now (not a tracer inside jit or grad)."""
+    try:
+        np.asarray(v)
+    except (TypeError, jax.errors.TracerArrayConversionError):
+        return False
+    return True
+
+
+def lewis_section(breadth, draft, sigma, *, n_points: int = 12):
+    """Half offsets (y, z) of a Lewis-form section (Lewis 1929): the conformal map
+    y = M((1 + a₁) sin θ − a₃ sin 3θ), z = −M((1 − a₁) cos θ + a₃ cos 3θ), θ from π/2 (the
+    waterline, y = B/2) to 0 (the keel), whose three coefficients give the beam ``breadth``,
+    the draft ``draft`` and the area coefficient ``sigma`` = A/(BT) exactly (the form of
+    Journée & Adegeest, "Theoretical manual of strip theory program SEAWAY", TU Delft report
+    1370). The cheap hull description of three numbers per station; the section is then
+    solved by the close-fit method like any other. Points are cosine-spaced in θ.
+    Differentiable in the three numbers. Raises ValueError naming ``sigma`` where no Lewis
+    form has that area coefficient at that B/2T (the map would loop)."""
+    h0 = breadth / (2.0 * draft)
+    c1 = (3.0 + 4.0 * sigma / jnp.pi) + (1.0 - 4.0 * sigma / jnp.pi) * (
+        (h0 - 1.0) / (h0 + 1.0)
+    ) ** 2
+    disc = 9.0 - 2.0 * c1
+    if _concrete(disc) and not (float(disc) >= 0 and float(breadth) > 0 and float(draft) > 0):
+        raise ValueError(
+            f"parameter 'sigma' = {float(sigma):g}: no Lewis form has that area coefficient "
+            f"at B/2T = {float(h0):g} (and breadth, draft must be > 0)"
+        )
+    a3 = (-c1 + 3.0 + jnp.sqrt(jnp.maximum(disc, 0.0))) / c1
+    a1 = (h0 - 1.0) * (a3 + 1.0) / (h0 + 1.0)
+    scale = 0.5 * breadth / (1.0 + a1 + a3)
+    theta = 0.25 * jnp.pi * (1.0 + jnp.cos(jnp.linspace(0.0, jnp.pi, n_points)))  # π/2 → 0
+    y = scale * ((1.0 + a1) * jnp.sin(theta) - a3 * jnp.sin(3.0 * theta))
+    z = -scale * ((1.0 - a1) * jnp.cos(theta) + a3 * jnp.cos(3.0 * theta))
+    if _concrete(y) and np.any(np.asarray(y) < -1e-9 * float(breadth)):
+        raise ValueError(
+            f"parameter 'sigma' = {float(sigma):g}: the Lewis form at B/2T = {float(h0):g} "
+            "crosses the centreline"
+        )
+    return y.at[-1].set(0.0), z
+
+
+def lewis_hull(x, dx, breadth, draft, sigma, *, n_points: int = 12, name: str = "lewis") -> Hull:
+    """A hull of Lewis-form sections (`lewis_section`) from its sectional particulars:
+    station x and strip length dx [m], breadth and draft [m] and area coefficient of each
+    station (arrays of one length, or scalars broadcast); no transom."""
+    x, dx, breadth, draft, sigma = jnp.broadcast_arrays(
+        *(jnp.asarray(v, dtype=float) for v in (x, dx, breadth, draft, sigma))
+    )
+    secs = [
+        lewis_section(b, t, s, n_points=n_points)
+        for b, t, s in zip(breadth, draft, sigma, strict=True)
+    ]
+    return Hull(x, dx, jnp.stack([y for y, _ in secs]), jnp.stack([z for _, z in secs]), name)
 
 
 def wigley(
@@ -124,12 +188,54 @@ def wigley(
     )
 
 
+def contour(y, z, n_points: int):
+    """``n_points`` half offsets along the section contour through the points (y, z) [m],
+    from the waterline down to the keel, then closed to the centreline at the keel: the
+    panels follow the contour's arc length, the corners (turns over 20°) are kept as panel
+    ends, and each straight piece gets panels in proportion to its length (at least one),
+    cosine-spaced towards its ends. Points below where the contour first reaches the
+    centreline are dropped. NumPy (for files and meshes; not differentiable)."""
+    y, z = np.asarray(y, float), np.asarray(z, float)
+    on_axis = np.flatnonzero(y <= 1e-12 * max(np.max(y), 1e-300))
+    stop = on_axis[0] + 1 if on_axis.size else y.size
+    y, z = y[:stop], z[:stop]
+    if y[-1] > 0:  # close to the centreline along the keel
+        y, z = np.r_[y, 0.0], np.r_[z, z[-1]]
+    p = np.stack([y, z], axis=1)
+    keep = np.r_[True, np.linalg.norm(np.diff(p, axis=0), axis=1) > 1e-12 * np.ptp(p)]
+    p = p[keep]
+    d = np.diff(p, axis=0)
+    heading = np.arctan2(d[:, 1], d[:, 0])
+    turn = np.abs((np.diff(heading) + np.pi) % (2 * np.pi) - np.pi)
+    corners = np.r_[0, np.flatnonzero(turn > np.radians(20.0)) + 1, len(p) - 1]
+    arc = np.r_[0.0, np.cumsum(np.linalg.norm(d, axis=1))]
+    pieces = np.diff(arc[corners])
+    n_panels = n_points - 1
+    if n_panels < len(pieces):
+        raise ValueError(
+            f"parameter 'n_points' = {n_points}: the contour has {len(pieces)} straight pieces, "
+            f"so it needs at least {len(pieces) + 1} points"
+        )
+    share = np.maximum(1, np.floor(pieces / pieces.sum() * n_panels).astype(int))
+    while share.sum() < n_panels:
+        share[np.argmax(pieces / share)] += 1
+    while share.sum() > n_panels:
+        share[np.argmax(np.where(share > 1, share / pieces, -1))] -= 1
+    s = [arc[corners[0] : corners[0] + 1]]
+    for k, m in enumerate(share):
+        a0, a1 = arc[corners[k]], arc[corners[k + 1]]
+        t = 0.5 * (1.0 - np.cos(np.linspace(0.0, np.pi, m + 1)[1:]))
+        s.append(a0 + t * (a1 - a0))
+    s = np.concatenate(s)
+    return np.interp(s, arc, p[:, 0]), np.interp(s, arc, p[:, 1])
+
+
 def offsets_file(path, *, n_points: int = 12) -> Hull:
     """A hull from an offsets table (CSV): the first row is ``x`` and the waterline heights z
     [m] (0 at the still waterline, negative below; they must include 0); each further row is
     a station, its x [m] from midships (+ forward) and the half-breadths [m] at those
-    waterlines. Each station is resampled to ``n_points`` offsets between the waterline and
-    the deepest waterline, and closed to the centreline at the keel. Stations whose breadth
+    waterlines. Each station's contour through those points, closed to the centreline at
+    its keel, is resampled to ``n_points`` offsets along its arc length (`contour`). Stations whose breadth
     at the waterline is zero are left out (they carry no section); strips follow the
     stations' spacing (half-way to each neighbour). The hull ends in a transom when the
     first (aftmost) station of the file has breadth at the waterline and depth below it."""
@@ -163,10 +269,9 @@ def offsets_file(path, *, n_points: int = 12) -> Hull:
     edges = np.r_[x_all[0], 0.5 * (x_all[1:] + x_all[:-1]), x_all[-1]]
     dx_all = np.diff(edges)
     keep = half[:, 0] > 0
-    zq = zs[-1] * 0.5 * (1.0 - np.cos(np.linspace(0.0, np.pi, n_points - 1)))
-    ys = np.array([np.interp(-zq, -zs, h) for h in half[keep]])
-    ys = np.c_[ys, np.zeros(len(ys))]
-    zz = np.tile(np.r_[zq, zq[-1]], (len(ys), 1))
+    sections = [contour(h, zs, n_points) for h in half[keep]]
+    ys = np.array([c[0] for c in sections])
+    zz = np.array([c[1] for c in sections])
     return Hull(
         jnp.asarray(x_all[keep]),
         jnp.asarray(dx_all[keep]),

@@ -43,7 +43,7 @@ import numpy as np
 from jaxtyping import Array, Bool, Complex, Float
 
 from .._values import ASSUMPTIONS
-from ._hull import MODES, Hull, _section_wave_forces, hydrostatics
+from ._hull import MODES, Hull, _concrete, _section_wave_forces, hydrostatics
 from ._sections import section_coefficients
 
 #: section mode (sway 0, heave 1, roll 2) of each hull mode (`MODES`)
@@ -199,14 +199,6 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     return dict(we=we, rao=rao, added=added, damping=damping, f=f, valid=valid, fk3=fk3, a=a, b=b)
 
 
-def _traced(x) -> bool:
-    try:
-        float(x)
-    except (TypeError, jax.errors.ConcretizationTypeError):
-        return True
-    return False
-
-
 def _inputs(hull, omega, beta, u, radii, roll_damping):
     omega = np.atleast_1d(np.asarray(omega, dtype=float))
     beta = np.atleast_1d(np.asarray(beta, dtype=float))
@@ -220,7 +212,7 @@ def _inputs(hull, omega, beta, u, radii, roll_damping):
         raise ValueError(
             f"parameter 'roll_damping' (fraction of critical) must lie in [0, 1), got {roll_damping!r}"
         )
-    concrete = [r for r in radii if not isinstance(r, jax.Array) or not _traced(r)]
+    concrete = [r for r in radii if _concrete(r)]
     if len(radii) != 3 or not all(np.isfinite(r) and r > 0 for r in concrete):
         raise ValueError(f"parameter 'radii' must be three radii of gyration > 0, got {radii!r}")
     return jnp.asarray(omega), jnp.asarray(beta)
