@@ -1,5 +1,6 @@
 """Zero-speed mean drift of the box (Barge 1) and the raked Barge 2 by strip theory
-(`jaxtow.strip.drift_qtf`: Gerritsma-Beukelman plus the R-function short-wave part) against
+(`jaxtow.strip.drift_qtf`: Gerritsma-Beukelman or the strips' far field (Maruo) plus the
+R-function short-wave part) against
 the shipped panel-method databases (Capytaine far field, `jaxtow.presets.database`), by
 zone; and the speed of the full strip table (21 sections, 40 frequencies, 13 headings, RAOs
 and added resistance at 2 m/s) with compile separate, against the panel pipeline for the
@@ -47,6 +48,8 @@ def drift_rows():
     for name, (hull, wl) in hulls().items():
         q = strip.drift_qtf(hull, wl, np.array(OMEGA), beta, z_g=Z_G)
         gb = strip.added_resistance(hull, np.array(OMEGA), beta, z_g=Z_G)
+        maruo = strip.added_resistance(hull, np.array(OMEGA), beta, z_g=Z_G, method="maruo")
+        q_maruo = strip.drift_qtf(hull, wl, np.array(OMEGA), beta, z_g=Z_G, method="maruo")
         panel = presets.database(name, "far_field")
         for i, w in enumerate(OMEGA):
             for j, b in enumerate(BETA_DEG):
@@ -60,6 +63,8 @@ def drift_rows():
                         strip_fx=float(s[0]),
                         strip_fy=float(s[1]),
                         gerritsma_beukelman_fx=-float(gb.r[i, j]),
+                        maruo_fx=-float(maruo.r[i, j]),
+                        strip_maruo_fx=float(np.asarray(q_maruo(w, math.radians(b)))[0]),
                         panel_fx=float(p[0]),
                         panel_fy=float(p[1]),
                     )
@@ -121,7 +126,12 @@ def main(argv=None):
             print(
                 f"{r['hull']} β={r['beta_deg']:5.1f} ω={r['omega']:.2f} {f}: strip "
                 f"{r['strip_' + f]:10.0f}  panel {r['panel_' + f]:10.0f}"
-                + (f"  (GB alone {r['gerritsma_beukelman_fx']:10.0f})" if f == "fx" else "")
+                + (
+                    f"  (GB alone {r['gerritsma_beukelman_fx']:10.0f}, Maruo strips "
+                    f"{r['maruo_fx']:10.0f}, with R-function {r['strip_maruo_fx']:10.0f})"
+                    if f == "fx"
+                    else ""
+                )
             )
     print(
         f"strip table {speed['warm']:.2f} s (+ {speed['compile']:.1f} s compile)"

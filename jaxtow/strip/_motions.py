@@ -140,9 +140,10 @@ def _restoring(hs, mass, z_g, rho, g):
 
 
 def _sections_at(hull, omega_e, n_encounter, rho, g):
-    """Section coefficients and radiation potentials of every station at |ω_e| (m,),
-    linearly interpolated from a solve on `_frequency_grid`; the potentials conjugated where
-    ω_e < 0 (the radiated waves of the reversed time dependence)."""
+    """Section coefficients, radiation potentials and beam-sea heave exciting forces of every
+    station at |ω_e| (m,), linearly interpolated from a solve on `_frequency_grid`; the
+    complex ones conjugated where ω_e < 0 (the radiated waves of the reversed time
+    dependence)."""
     length = float(jnp.sum(hull.dx))
     grid, i, t, inside = _frequency_grid(omega_e, n_encounter, 0.3 * np.sqrt(g / length))
     secs = jax.vmap(lambda y, z: section_coefficients(y, z, jnp.asarray(grid), rho=rho, g=g))(
@@ -153,9 +154,12 @@ def _sections_at(hull, omega_e, n_encounter, rho, g):
         tt = jnp.asarray(t).reshape((1, -1) + (1,) * (v.ndim - 2))
         return v[:, i] * (1 - tt) + v[:, i + 1] * tt
 
-    neg = jnp.asarray(np.asarray(omega_e) < 0)[None, :, None, None]
+    neg = jnp.asarray(np.asarray(omega_e) < 0)[None, :]
     pots = at(secs.potentials)
-    return at(secs.added_mass), at(secs.damping), jnp.where(neg, jnp.conj(pots), pots), inside
+    pots = jnp.where(neg[..., None, None], jnp.conj(pots), pots)
+    x3 = at(secs.exciting[..., 1])
+    x3 = jnp.where(neg, jnp.conj(x3), x3)
+    return at(secs.added_mass), at(secs.damping), pots, x3, inside
 
 
 def _exciting(hull, pots, omega, beta_flat, c, k_cos, rho, g):
@@ -180,7 +184,7 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     b_flat = jnp.tile(beta, omega.shape[0])
     we = encounter_frequency(w_flat, b_flat, u, g)
     n_grid = None if u == 0 else n_encounter  # at zero speed: the frequencies themselves
-    a, b, pots, inside = _sections_at(hull, np.asarray(we), n_grid, rho, g)
+    a, b, pots, x3, inside = _sections_at(hull, np.asarray(we), n_grid, rho, g)
     c = 1j * u / we
     t = we[None, :, None, None] ** 2 * a + 1j * we[None, :, None, None] * b
     tm = _radiation(t, hull.x, hull.dx, c, hull.transom)  # (m, 5, 5)
@@ -196,7 +200,9 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     h = -(we[:, None, None] ** 2) * (mm + added) - 1j * we[:, None, None] * damping_v + cc
     rao = jnp.linalg.solve(h, f[..., None])[..., 0]
     valid = jnp.asarray(inside) & (u * jnp.abs(we) / g < 0.25)
-    return dict(we=we, rao=rao, added=added, damping=damping, f=f, valid=valid, fk3=fk3, a=a, b=b)
+    return dict(
+        we=we, rao=rao, added=added, damping=damping, f=f, valid=valid, fk3=fk3, a=a, b=b, x3=x3
+    )
 
 
 def _inputs(hull, omega, beta, u, radii, roll_damping):
