@@ -33,6 +33,10 @@ Z_G = float(presets.ASSUMPTIONS["cog_z"]["value"]) - T
 OMEGA = [0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2, 1.4, 1.7, 2.0, 2.5]
 BETA_DEG = [0.0, 45.0, 90.0, 135.0, 180.0]
 TABLE = dict(n_omega=40, n_beta=13, u=2.0)
+#: frequencies of the RAO comparison (head and beam seas; needs Capytaine)
+RAO_OMEGA = [0.3, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.4]
+#: (strip mode index, Capytaine dof) of the compared RAOs (angles, and heave at midships)
+RAO_MODES = {"heave": (1, "Heave"), "roll": (2, "Roll"), "pitch": (3, "Pitch")}
 
 
 def hulls():
@@ -96,6 +100,36 @@ def capytaine_speed():
     return time.perf_counter() - t0
 
 
+def rao_rows():
+    """Heave, roll and pitch RAOs of both hulls in head and beam seas: strip theory against
+    the panel pipeline (`jaxtow.bem.box_barge_drift`, 2 m panels), same mass, CoG, radii and
+    roll damping."""
+    from jaxtow.bem import box_barge_drift, rao
+
+    rows = []
+    beta = np.radians([0.0, 90.0])
+    rakes = {"barge1": 0.0, "barge2": presets.barge2_rake(T)["extent"]}
+    for name, (hull, _) in hulls().items():
+        s = np.asarray(strip.motions(hull, np.array(RAO_OMEGA), beta, z_g=Z_G).rao)
+        ds = box_barge_drift(L, B, T, Z_G + T, RAO_OMEGA, beta, rake=rakes[name]).dataset
+        p = np.asarray(rao(ds))  # (omega, beta, dof)
+        dofs = [str(d) for d in ds.dof.values]
+        for i, w in enumerate(RAO_OMEGA):
+            for j, b in enumerate((0.0, 90.0)):
+                for mode, (k, dof) in RAO_MODES.items():
+                    rows.append(
+                        dict(
+                            hull=name,
+                            omega=w,
+                            beta_deg=b,
+                            mode=mode,
+                            strip=float(abs(s[i, j, k])),
+                            panel=float(abs(p[i, j, dofs.index(dof)])),
+                        )
+                    )
+    return rows
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--capytaine", action="store_true", help="time the panel pipeline too")
@@ -114,6 +148,7 @@ def main(argv=None):
         command="python benchmarks/strip_drift_vs_panel.py --capytaine",
     )
     if args.capytaine:
+        result["raos"] = rao_rows()
         cap = capytaine_speed()
         result["time_s"]["capytaine_pipeline"] = cap
         result["ratio_capytaine_over_strip"] = cap / speed["warm"]
