@@ -291,3 +291,17 @@ def test_committed_motion_comparison_matches_the_strip_side():
     for r in data["raos"]:
         if r["mode"] == "heave" and r["omega"] <= 0.6:
             assert abs(r["strip"] / r["panel"] - 1) < 0.04
+
+
+@pytest.mark.slow
+def test_following_seas_through_zero_encounter_frequency_stay_finite(wigley):
+    """Following waves whose encounter frequency passes through zero: every result is finite
+    and the frequencies near ω_e = 0 are marked invalid, never NaN."""
+    u = 1.0
+    w0 = G / u  # ω_e = ω − ω²U/g = 0 here in following seas
+    om = np.array([0.5 * w0, w0, 1.5 * w0])
+    ar = S.added_resistance(wigley, om, [np.pi], u)
+    m = ar.motions
+    assert np.all(np.isfinite(np.asarray(m.rao))) and np.all(np.isfinite(np.asarray(ar.r)))
+    assert float(m.omega_e[1, 0]) == pytest.approx(0.0, abs=1e-12)
+    assert not bool(m.valid[1, 0])

@@ -61,7 +61,8 @@ class Motions(eqx.Module):
     the speed and transom terms, and the exciting forces (w, b, 5); ``valid`` (w, b): where
     the encounter frequency lies inside the computed range (below it the section
     coefficients are held at the lowest computed frequency) and strip theory's τ = Uω_e/g
-    is below 1/4. ``roll_damping``: the fraction of critical used (an estimate)."""
+    is below 1/4. ``roll_damping``: the fraction of critical used (an estimate; a hull
+    without roll stability, GM ≤ 0, gets none, and its roll is meaningless)."""
 
     omega: Float[Array, " w"]
     beta: Float[Array, " b"]
@@ -182,7 +183,12 @@ def _exciting(hull, pots, omega, beta_flat, c, k_cos, rho, g):
 def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g):
     w_flat = jnp.repeat(omega, beta.shape[0])
     b_flat = jnp.tile(beta, omega.shape[0])
-    we = encounter_frequency(w_flat, b_flat, u, g)
+    we_true = encounter_frequency(w_flat, b_flat, u, g)
+    floor = 0.3 * np.sqrt(g / float(jnp.sum(hull.dx)))  # below it: invalid (`valid`)
+    # an encounter frequency of zero (following seas) is moved off zero for the solve, so
+    # that the results stay finite (and marked invalid), not NaN
+    tiny = 1e-3 * floor
+    we = jnp.where(jnp.abs(we_true) < tiny, jnp.where(we_true < 0, -tiny, tiny), we_true)
     n_grid = None if u == 0 else n_encounter  # at zero speed: the frequencies themselves
     a, b, pots, x3, inside = _sections_at(hull, np.asarray(we), n_grid, rho, g)
     c = 1j * u / we
@@ -199,9 +205,20 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     damping_v = damping.at[:, 2, 2].add(bv)
     h = -(we[:, None, None] ** 2) * (mm + added) - 1j * we[:, None, None] * damping_v + cc
     rao = jnp.linalg.solve(h, f[..., None])[..., 0]
-    valid = jnp.asarray(inside) & (u * jnp.abs(we) / g < 0.25)
+    resolved = jnp.asarray(inside) & (jnp.abs(we_true) >= floor * (1 - 1e-12))
+    valid = resolved & (u * jnp.abs(we_true) / g < 0.25)
     return dict(
-        we=we, rao=rao, added=added, damping=damping, f=f, valid=valid, fk3=fk3, a=a, b=b, x3=x3
+        we=we_true,
+        we_solved=we,
+        rao=rao,
+        added=added,
+        damping=damping,
+        f=f,
+        valid=valid,
+        fk3=fk3,
+        a=a,
+        b=b,
+        x3=x3,
     )
 
 

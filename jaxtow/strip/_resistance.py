@@ -71,7 +71,7 @@ def _relative_velocity(hull: Hull, m: Motions, internals, rho, g):
     nb = m.beta.shape[0]
     w = jnp.repeat(m.omega, nb)
     beta = jnp.tile(m.beta, m.omega.shape[0])
-    we = internals["we"]
+    we = internals["we_solved"]
     k = w**2 / g
     k_cos = -k * jnp.cos(beta)  # k cos χ
     eta3 = internals["rao"][:, 1]
@@ -90,7 +90,7 @@ def _gerritsma_beukelman(hull: Hull, m: Motions, internals, rho, g):
     da_dx = jnp.asarray(jnp.gradient(a33, hull.x, axis=0))
     b_eff = b33 - m.u * da_dx
     power = jnp.sum(hull.dx[:, None] * b_eff * jnp.abs(v) ** 2, axis=0)  # 2 × mean power
-    return k * jnp.cos(beta) * power / (2.0 * jnp.abs(internals["we"]))
+    return k * jnp.cos(beta) * power / (2.0 * jnp.abs(internals["we_solved"]))
 
 
 #: directions of the far-field integral of `maruo` (midpoint rule over the circle)
