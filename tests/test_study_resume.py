@@ -148,3 +148,27 @@ def test_failure_in_the_last_step_keeps_every_earlier_result(tmp_path, monkeypat
     text = (tmp_path / "barge2a_report.html").read_text()
     assert "(INCOMPLETE)" in text and "forced failure in the time domain" in text
     assert np.isfinite(s["map"]["straight_stable_share"])
+
+
+def test_a_swallowed_ctrl_c_still_stops_the_study_at_the_next_step():
+    """A Ctrl-C whose KeyboardInterrupt is swallowed on its way (a finaliser, a callback that
+    ignores exceptions) is remembered: the study's next step boundary stops it."""
+    from jaxtow._interrupt import sticky
+    from jaxtow.studies._assessment import Steps
+
+    def swallow():
+        try:
+            os.kill(os.getpid(), signal.SIGINT)
+            for _ in range(1000):  # the interrupt lands at a bytecode in here
+                pass
+        except KeyboardInterrupt:
+            pass
+
+    steps = Steps(2, enabled=False)
+    with sticky():
+        with pytest.raises(KeyboardInterrupt):
+            steps.run("one", "one", swallow)  # the step finishes, then the study stops
+        assert "one" in steps.times and steps.k == 1
+        with pytest.raises(KeyboardInterrupt):
+            steps.run("two", "two", lambda: None)
+    assert steps.k == 1  # the second step never started

@@ -36,6 +36,7 @@ from filelock import FileLock, Timeout
 
 import jaxtow as jt
 
+from .._interrupt import sticky as sticky_interrupt
 from . import (
     bem,
     bifurcation,
@@ -121,7 +122,8 @@ def main(argv=None) -> int:
         manifest.start()
     status, error = "failed", None
     try:
-        args.func(args)
+        with sticky_interrupt():  # a Ctrl-C swallowed on its way still stops a study
+            args.func(args)
         status = "finished"
     except KeyboardInterrupt:
         status = "interrupted"

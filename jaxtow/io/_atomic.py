@@ -16,6 +16,8 @@ import signal
 import threading
 from pathlib import Path
 
+from .._interrupt import request
+
 
 @contextlib.contextmanager
 def _held_interrupts():
@@ -27,6 +29,7 @@ def _held_interrupts():
     seen = []
 
     def handler(signum, frame):
+        request()  # remembered past the block, even if the raise below is swallowed
         if seen:  # a second Ctrl-C: the user insists
             raise KeyboardInterrupt
         seen.append(signum)

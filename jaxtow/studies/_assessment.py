@@ -19,6 +19,7 @@ import numpy as np
 from .. import resistance
 from .._dynamics import all_valid, at_tug_speed, validity
 from .._equilibrium import equilibria
+from .._interrupt import requested as interrupt_requested
 from .._metrics import fishtail_metrics, trajectory
 from .._results import sweep
 from .._simulate import initial_state, simulate
@@ -78,7 +79,11 @@ class Steps:
             self.stream.flush()
 
     def run(self, key: str, label: str, fn, *args, **kw):
-        """Step ``key`` (its name in the store), shown as ``label``: ``fn(*args, **kw)``."""
+        """Step ``key`` (its name in the store), shown as ``label``: ``fn(*args, **kw)``.
+        A Ctrl-C that arrived, even one swallowed on its way (`jaxtow._interrupt`), stops
+        the study here, before the step or after it is stored."""
+        if interrupt_requested():
+            raise KeyboardInterrupt
         self.k += 1
         self.current = label
         if self.store is not None and (out := self.store.get(key)) is not None:
@@ -91,6 +96,8 @@ class Steps:
         if self.store is not None:
             self.store.put(key, out)
         self._say(f"{label}: done in {self.times[label]:.1f} s")
+        if interrupt_requested():
+            raise KeyboardInterrupt
         return out
 
 

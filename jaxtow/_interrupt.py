@@ -1,0 +1,46 @@
+"""A Ctrl-C that is not lost.
+
+Python delivers SIGINT as a `KeyboardInterrupt` raised wherever the main thread is at the
+next bytecode; when that is a finaliser or a callback whose exceptions are printed and
+ignored, the interrupt is gone and a long job runs on. The command line therefore installs
+`sticky` around each command: the handler also records the request, and the study's steps
+(`jaxtow.studies`) look at `requested` between steps, so an interrupt that was swallowed
+stops the job at the next step boundary all the same.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import threading
+
+_REQUESTED = threading.Event()
+
+
+def requested() -> bool:
+    """Whether a Ctrl-C arrived since `sticky` began."""
+    return _REQUESTED.is_set()
+
+
+def request() -> None:
+    """Record a Ctrl-C (for handlers that hold the interrupt for a while)."""
+    _REQUESTED.set()
+
+
+def _handler(signum, frame):
+    _REQUESTED.set()
+    raise KeyboardInterrupt
+
+
+@contextlib.contextmanager
+def sticky():
+    """Record every Ctrl-C in the block (main thread only; elsewhere nothing changes)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    _REQUESTED.clear()
+    previous = signal.signal(signal.SIGINT, _handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
