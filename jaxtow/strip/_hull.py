@@ -323,73 +323,78 @@ def _section_wave_forces(y, z, potentials, omega, sin_chi, rho, g):
     return fk, diffraction
 
 
-def _strip_matrix(sec, x, dx):
-    """Σ over strips of a (n, w, 3, 3) section matrix into (w, 5, 5): sway-yaw and heave-pitch
-    through the lever x (vertical motion η3 − xη5, lateral η2 + xη6)."""
-    s = sec * dx[:, None, None, None]
-    xs = x[:, None]
-    m = jnp.zeros(s.shape[1:2] + (5, 5))
-    # sway (0), heave (1), roll (2) of the section; hull modes 0 sway,1 heave,2 roll,3 pitch,4 yaw
-    m = m.at[:, :3, :3].set(jnp.sum(s, axis=0))
-    m = m.at[:, 1, 3].set(-jnp.sum(xs * s[..., 1, 1], axis=0))
-    m = m.at[:, 3, 1].set(-jnp.sum(xs * s[..., 1, 1], axis=0))
-    m = m.at[:, 3, 3].set(jnp.sum(xs**2 * s[..., 1, 1], axis=0))
-    m = m.at[:, 0, 4].set(jnp.sum(xs * s[..., 0, 0], axis=0))
-    m = m.at[:, 4, 0].set(jnp.sum(xs * s[..., 0, 0], axis=0))
-    m = m.at[:, 2, 4].set(jnp.sum(xs * s[..., 2, 0], axis=0))
-    m = m.at[:, 4, 2].set(jnp.sum(xs * s[..., 0, 2], axis=0))
-    m = m.at[:, 4, 4].set(jnp.sum(xs**2 * s[..., 0, 0], axis=0))
-    return m
+#: section mode (sway 0, heave 1, roll 2) of each hull mode (`MODES`)
+_SECTION_MODE = np.array([0, 1, 2, 1, 0])
+#: the speed term of each hull mode's motion lever: pitch −x + c, yaw x − c
+_SPEED_SIGN = np.array([0.0, 0.0, 0.0, 1.0, -1.0])
 
 
-def _strip_forces(sec_forces, x, dx, k_cos):
-    """Σ over strips of section forces (n, w, b, 3) with the wave's phase e^{ik x cosχ} into
-    the hull's (w, b, 5): sway, heave, roll, pitch = −Σ x f3, yaw = Σ x f2."""
-    phase = jnp.exp(1j * k_cos[None] * x[:, None, None])  # (n, w, b)
-    f = sec_forces * (phase * dx[:, None, None])[..., None]
-    xs = x[:, None, None]
-    return jnp.stack(
-        [
-            jnp.sum(f[..., 0], axis=0),
-            jnp.sum(f[..., 1], axis=0),
-            jnp.sum(f[..., 2], axis=0),
-            -jnp.sum(xs * f[..., 1], axis=0),
-            jnp.sum(xs * f[..., 0], axis=0),
-        ],
-        axis=-1,
-    )
+def _levers(x, c):
+    """(plain u, motion w, force v) levers of the five hull modes at stations x (n,) for the
+    speed factors c (m,): each (n, m, 5)."""
+    one = jnp.ones(x.shape + c.shape)
+    xx = jnp.broadcast_to(x[:, None], one.shape)
+    plain = jnp.stack([one, one, one, -xx, xx], axis=-1)
+    speed = jnp.asarray(_SPEED_SIGN) * c[None, :, None]
+    return plain, plain + speed, plain - speed
+
+
+def _radiation(t, x, dx, c, transom):
+    """T (m, 5, 5) from the section coefficients t (n, m, 3, 3): the strip integrals with
+    the speed terms c (m,) of Salvesen, Tuck & Faltinsen and the transom term (the formula is
+    in the docstring of `jaxtow.strip._motions`; c = 0 gives the zero-speed integrals)."""
+    plain, motion, force = _levers(x, c)
+    ts = t[:, :, _SECTION_MODE][:, :, :, _SECTION_MODE]  # (n, m, 5, 5)
+    body = jnp.einsum("n,nmj,nmk,nmjk->mjk", dx, force, motion, ts)
+    if not transom:
+        return body
+    end = c[:, None, None] * plain[0, :, :, None] * motion[0, :, None, :] * ts[0]
+    return body + end
+
+
+def _exciting(hull, pots, omega, beta_flat, c, k_cos, rho, g):
+    """Exciting forces (m, 5) and the sections' Froude-Krylov heave force (n, m) (for the
+    relative motion of the added resistance)."""
+    sin_chi = -jnp.sin(beta_flat)
+    fk, dif = jax.vmap(lambda y, z, p: _section_wave_forces(y, z, p, omega, sin_chi, rho, g))(
+        hull.y, hull.z, pots
+    )  # (n, m, 3) each
+    phase = jnp.exp(1j * k_cos[None] * hull.x[:, None])  # (n, m)
+    plain, _, force = _levers(hull.x, c)
+    fk_m = fk[..., _SECTION_MODE] * phase[..., None]
+    dif_m = dif[..., _SECTION_MODE] * phase[..., None]
+    f = jnp.einsum("n,nmj->mj", hull.dx, plain * fk_m + force * dif_m)
+    if hull.transom:
+        f = f + c[:, None] * plain[0] * dif_m[0]
+    return f, fk[..., 1]
 
 
 def hull_coefficients(
     hull: Hull, omega, beta=None, *, rho: float = 1025.0, g: float = 9.80665
 ) -> HullCoefficients:
     """Zero-speed strip theory: the section coefficients of every station
-    (`section_coefficients`, vmapped over the stations) summed over the strips, with the
-    lever arms of pitch and yaw; with headings ``beta`` [rad] also the exciting forces
-    (`_section_wave_forces` of each station, with the wave's phase along the hull).
+    (`section_coefficients`, vmapped over the stations) summed over the strips with the
+    lever arms of pitch and yaw (`_radiation` without the speed terms); with headings
+    ``beta`` [rad] also the exciting forces (`_exciting`: each station's, with the wave's
+    phase along the hull).
     Differentiable in the offsets."""
     omega = jnp.atleast_1d(jnp.asarray(omega, dtype=float))
     secs = jax.vmap(lambda y, z: section_coefficients(y, z, omega, rho=rho, g=g))(hull.y, hull.z)
+    zero = jnp.zeros(omega.shape, complex)  # no speed: the plain levers
     out = dict(
         omega=omega,
-        added_mass=_strip_matrix(secs.added_mass, hull.x, hull.dx),
-        damping=_strip_matrix(secs.damping, hull.x, hull.dx),
+        added_mass=jnp.real(_radiation(secs.added_mass, hull.x, hull.dx, zero, False)),
+        damping=jnp.real(_radiation(secs.damping, hull.x, hull.dx, zero, False)),
     )
     if beta is None:
         return HullCoefficients(**out)
     beta = jnp.atleast_1d(jnp.asarray(beta, dtype=float))
-    # the waves travel towards χ = β + π: cos χ = −cos β, sin χ = −sin β
     nw, nb = omega.shape[0], beta.shape[0]
-    w_flat = jnp.repeat(omega, nb)
-    sin_flat = jnp.tile(-jnp.sin(beta), nw)
-
-    def station(y, z, p):
-        fk, dif = _section_wave_forces(y, z, jnp.repeat(p, nb, axis=0), w_flat, sin_flat, rho, g)
-        return (fk + dif).reshape(nw, nb, 3)
-
-    per_heading = jax.vmap(station)(hull.y, hull.z, secs.potentials)  # (n, w, b, 3)
-    k = omega**2 / g
-    exciting = _strip_forces(per_heading, hull.x, hull.dx, -k[:, None] * jnp.cos(beta)[None])
+    w_flat, b_flat = jnp.repeat(omega, nb), jnp.tile(beta, nw)
+    pots = jnp.repeat(secs.potentials, nb, axis=1)  # (n, w·b, panels, 3)
+    k_cos = -(w_flat**2) / g * jnp.cos(b_flat)  # k cos χ
+    f, _ = _exciting(hull, pots, w_flat, b_flat, jnp.zeros_like(w_flat, complex), k_cos, rho, g)
+    exciting = f.reshape(nw, nb, 5)
     return HullCoefficients(**out, beta=beta, exciting=exciting)
 
 

@@ -43,13 +43,8 @@ import numpy as np
 from jaxtyping import Array, Bool, Complex, Float
 
 from .._values import ASSUMPTIONS
-from ._hull import MODES, Hull, _concrete, _section_wave_forces, hydrostatics
+from ._hull import MODES, Hull, _concrete, _exciting, _radiation, hydrostatics
 from ._sections import section_coefficients
-
-#: section mode (sway 0, heave 1, roll 2) of each hull mode (`MODES`)
-_SECTION_MODE = np.array([0, 1, 2, 1, 0])
-#: the speed term of each hull mode's motion lever: pitch −x + c, yaw x − c
-_SPEED_SIGN = np.array([0.0, 0.0, 0.0, 1.0, -1.0])
 
 
 class Motions(eqx.Module):
@@ -99,27 +94,6 @@ def _frequency_grid(omega_e, n, floor):
     return grid, i, t, mag >= grid[0] * (1 - 1e-12)
 
 
-def _levers(x, c):
-    """(plain u, motion w, force v) levers of the five hull modes at stations x (n,) for the
-    speed factors c (m,): each (n, m, 5)."""
-    one = jnp.ones(x.shape + c.shape)
-    xx = jnp.broadcast_to(x[:, None], one.shape)
-    plain = jnp.stack([one, one, one, -xx, xx], axis=-1)
-    speed = jnp.asarray(_SPEED_SIGN) * c[None, :, None]
-    return plain, plain + speed, plain - speed
-
-
-def _radiation(t, x, dx, c, transom):
-    """T (m, 5, 5) from the section coefficients t (n, m, 3, 3) (module docstring)."""
-    plain, motion, force = _levers(x, c)
-    ts = t[:, :, _SECTION_MODE][:, :, :, _SECTION_MODE]  # (n, m, 5, 5)
-    body = jnp.einsum("n,nmj,nmk,nmjk->mjk", dx, force, motion, ts)
-    if not transom:
-        return body
-    end = c[:, None, None] * plain[0, :, :, None] * motion[0, :, None, :] * ts[0]
-    return body + end
-
-
 def _mass_matrix(mass, x_g, z_g, radii):
     kxx, kyy, kzz = radii
     m = jnp.zeros((5, 5))
@@ -161,23 +135,6 @@ def _sections_at(hull, omega_e, n_encounter, rho, g):
     x3 = at(secs.exciting[..., 1])
     x3 = jnp.where(neg, jnp.conj(x3), x3)
     return at(secs.added_mass), at(secs.damping), pots, x3, inside
-
-
-def _exciting(hull, pots, omega, beta_flat, c, k_cos, rho, g):
-    """Exciting forces (m, 5) and the sections' Froude-Krylov heave force (n, m) (for the
-    relative motion of the added resistance)."""
-    sin_chi = -jnp.sin(beta_flat)
-    fk, dif = jax.vmap(lambda y, z, p: _section_wave_forces(y, z, p, omega, sin_chi, rho, g))(
-        hull.y, hull.z, pots
-    )  # (n, m, 3) each
-    phase = jnp.exp(1j * k_cos[None] * hull.x[:, None])  # (n, m)
-    plain, _, force = _levers(hull.x, c)
-    fk_m = fk[..., _SECTION_MODE] * phase[..., None]
-    dif_m = dif[..., _SECTION_MODE] * phase[..., None]
-    f = jnp.einsum("n,nmj->mj", hull.dx, plain * fk_m + force * dif_m)
-    if hull.transom:
-        f = f + c[:, None] * plain[0] * dif_m[0]
-    return f, fk[..., 1]
 
 
 def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g):
