@@ -52,6 +52,22 @@ def test_wigley_hull_is_symmetric_and_positive():
     )
 
 
+@pytest.mark.parametrize("alpha, cm", [(1.0, 0.909), (0.0, 2.0 / 3.0)])
+def test_journee_wigley_forms_have_their_midship_coefficients(alpha, cm):
+    """Journée's (1992) Wigley forms: the midship section's area over B T is 0.909 for
+    models I and II (α = 1) and 2/3 for III and IV (α = 0); the waterline is the classic
+    form times (1 + 0.2ξ²); a negative α is refused by name."""
+    hull = S.wigley(3.0, 0.3, 0.1875, alpha=alpha, n_stations=21, n_points=201)
+    y, z = np.asarray(hull.y)[10], np.asarray(hull.z)[10]
+    assert np.asarray(hull.x)[10] == pytest.approx(0.0, abs=1e-12)
+    area = 2 * np.trapezoid(y[::-1], z[::-1])
+    assert area / (0.3 * 0.1875) == pytest.approx(cm, rel=2e-4)
+    xi = 2 * np.asarray(hull.x) / 3.0
+    assert np.allclose(np.asarray(hull.y)[:, 0], 0.15 * (1 - xi**2) * (1 + 0.2 * xi**2))
+    with pytest.raises(ValueError, match="'alpha'"):
+        S.wigley(3.0, 0.3, 0.1875, alpha=-1.0)
+
+
 def test_offsets_file_reads_a_box(tmp_path):
     path = tmp_path / "box.csv"
     xs = np.linspace(-38.1, 38.1, 22)

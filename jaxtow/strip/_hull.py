@@ -170,19 +170,36 @@ def lewis_hull(x, dx, breadth, draft, sigma, *, n_points: int = 12, name: str = 
 
 
 def wigley(
-    length: float, breadth: float, draft: float, *, n_stations: int = 21, n_points: int = 12
+    length: float,
+    breadth: float,
+    draft: float,
+    *,
+    alpha: float | None = None,
+    n_stations: int = 21,
+    n_points: int = 12,
 ) -> Hull:
-    """The Wigley hull y = (B/2)(1 − (2x/L)²)(1 − (z/T)²), the mathematical hull of many
-    seakeeping experiments (Journée 1992 tested it at L/B = 10, B/T = 1.6 and variants).
-    Offsets at n_points depths, cosine-spaced towards the waterline and the keel."""
+    """The Wigley hull y = (B/2)(1 − ξ²)(1 − ζ²), ξ = 2x/L, ζ = z/T, the mathematical hull of
+    many seakeeping experiments; with ``alpha``, the fuller form of Journée's (1992, Delft
+    report 909) four models, y = (B/2)[(1 − ζ²)(1 − ξ²)(1 + 0.2ξ²) + α ζ²(1 − ζ⁸)(1 − ξ²)⁴]
+    (α = 1: models I and II, midship coefficient 0.909; α = 0: III and IV, 0.667; all at
+    L = 3 m, T = 0.1875 m, B = 0.3 m (I, III) or 0.6 m (II, IV)). Offsets at n_points depths,
+    cosine-spaced towards the waterline and the keel."""
     for name, v in (("breadth", breadth), ("draft", draft)):
         if not v > 0:
             raise ValueError(f"{name} must be > 0, got {v!r}")
+    if alpha is not None and not (np.isfinite(alpha) and alpha >= 0):
+        raise ValueError(f"parameter 'alpha' must be None or a finite number >= 0, got {alpha!r}")
     x, dx = _strips(length, n_stations)
     s = 0.5 * (1.0 - np.cos(np.linspace(0.0, np.pi, n_points)))
     zs = -draft * s
-    half = 0.5 * breadth * (1.0 - (2.0 * x / length) ** 2)
-    ys = half[:, None] * (1.0 - (zs / draft) ** 2)[None, :]
+    xi2 = (2.0 * x / length)[:, None] ** 2
+    zeta2 = (zs / draft)[None, :] ** 2
+    if alpha is None:
+        eta = (1.0 - xi2) * (1.0 - zeta2)
+    else:
+        eta = (1.0 - zeta2) * (1.0 - xi2) * (1.0 + 0.2 * xi2)
+        eta = eta + alpha * zeta2 * (1.0 - zeta2**4) * (1.0 - xi2) ** 4
+    ys = 0.5 * breadth * eta
     return Hull(
         jnp.asarray(x), jnp.asarray(dx), jnp.asarray(ys), jnp.tile(zs, (len(x), 1)), "wigley"
     )

@@ -55,8 +55,8 @@ class Motions(eqx.Module):
     ``omega_e`` (w, b) [rad/s]; the hull's added mass and damping (w, b, 5, 5) at them, with
     the speed and transom terms, and the exciting forces (w, b, 5); ``valid`` (w, b): where
     the encounter frequency lies inside the computed range (below it the section
-    coefficients are held at the lowest computed frequency) and strip theory's τ = Uω_e/g
-    is below 1/4. ``roll_damping``: the fraction of critical used (an estimate; a hull
+    coefficients are held at the lowest computed frequency) and the Froude number is at
+    most `FROUDE_LIMIT`. ``roll_damping``: the fraction of critical used (an estimate; a hull
     without roll stability, GM ≤ 0, gets none, and its roll is meaningless)."""
 
     omega: Float[Array, " w"]
@@ -69,6 +69,16 @@ class Motions(eqx.Module):
     exciting: Complex[Array, "w b 5"]
     valid: Bool[Array, "w b"]
     roll_damping: float = eqx.field(static=True)
+
+
+#: The highest Froude number U/√(gL) at which the motions are marked valid: strip theory
+#: assumes a moderate speed, and its usual validations reach Fn 0.4 (Journée's 1992 Wigley
+#: experiments; Salvesen, Tuck & Faltinsen 1970 compare up to the Series 60's service
+#: speeds). An estimate of the theory's range, not a sharp limit. The parameter τ = Uω_e/g
+#: is no limit of it: τ > 1/4, where no radiated wave runs ahead of the ship, is the usual
+#: case in head seas (a Wigley hull at Fn 0.2 has τ ≈ 0.75 at its motion peak), and the
+#: far-field resistance (`maruo`) takes it into account.
+FROUDE_LIMIT = 0.4
 
 
 def encounter_frequency(omega, beta, u, g: float = 9.80665):
@@ -163,7 +173,8 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     h = -(we[:, None, None] ** 2) * (mm + added) - 1j * we[:, None, None] * damping_v + cc
     rao = jnp.linalg.solve(h, f[..., None])[..., 0]
     resolved = jnp.asarray(inside) & (jnp.abs(we_true) >= floor * (1 - 1e-12))
-    valid = resolved & (u * jnp.abs(we_true) / g < 0.25)
+    froude = u / np.sqrt(g * float(jnp.sum(hull.dx)))
+    valid = resolved & (froude <= FROUDE_LIMIT * (1 + 1e-9))
     return dict(
         we=we_true,
         we_solved=we,

@@ -16,15 +16,20 @@ Smith's correction, and the lateral variation of oblique waves). R_AW > 0 is a r
 the radiated part: the reflection of short waves at the bow is missing from it, which is
 what the short-wave correction below adds.
 
-**The strips' far field** (``method="maruo"``, zero speed): Maruo's (1960) far-field
+**The strips' far field** (``method="maruo"``, any speed): Maruo's (1960) far-field
 momentum balance with the strips as the radiating line, the slender-body idea of Joosen
-(1966). Each strip radiates 2-D waves of amplitude q = ω X₃ V_z/(ρg²) to each side (X₃ its
-beam-sea heave force: Haskind and the energy identity), their 3-D sum has the Kochin
-function Q(θ) = ∫ q e^{−ikx cos θ} dx, and the force is what the scattered waves take from
-the incident wave's momentum less what they carry (`_far_field`). Unlike Gerritsma-
-Beukelman it keeps the interference of the strips' waves along the hull (a hull short
-against the waves radiates less than its strips would alone) and the direction the
-energy goes. The radiation is the symmetric (heave-pitch) part only.
+(1966). Each strip radiates 2-D waves of amplitude q = ω_e X₃ V_z/(ρg²) to each side (X₃ its
+beam-sea heave force at the encounter frequency: Haskind and the energy identity); seen from
+afar the strips are a line of sources with these strengths, whose Kochin function
+H(κ, θ) ∝ ∫ q e^{−iκx cos θ} dx is summed over the wave systems that meet the encounter
+frequency in the ship's frame (at forward speed two, κ₁ and κ₂, the Doppler-shifted waves
+of Maruo's theory; `_far_field`, `_branches`). The force is what the scattered waves take
+from the incident wave's momentum less what they carry. Unlike Gerritsma-Beukelman it keeps
+the interference of the strips' waves along the hull (a hull short against the waves
+radiates less than its strips would alone) and the direction the energy goes. The
+radiation is the symmetric (heave-pitch) part only, and the diffraction is the strips'
+relative-motion part, as in Gerritsma-Beukelman; waves that overtake the ship (ω_e < 0) are
+not built and are marked invalid.
 
 **Drift table at zero speed** (`drift_qtf`): the R-function method of jaxtow's drift
 package (`jaxtow.drift.r_function_method`: F = F_M + R(k_e T) F_R) with the Gerritsma-
@@ -38,6 +43,7 @@ the resistance budget, the studies) can use strip theory.
 from __future__ import annotations
 
 import equinox as eqx
+import jax
 import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Bool, Float
@@ -93,42 +99,125 @@ def _gerritsma_beukelman(hull: Hull, m: Motions, internals, rho, g):
     return k * jnp.cos(beta) * power / (2.0 * jnp.abs(internals["we_solved"]))
 
 
-#: directions of the far-field integral of `maruo` (midpoint rule over the circle)
+#: directions of the zero-speed far-field integral of `maruo` (midpoint rule over the
+#: circle: exact for the trigonometric polynomial |Q(θ)|² of a hull up to kL ≈ 180)
 N_DIRECTIONS = 360
 
+#: Gauss nodes per interval of the forward-speed far-field integral (each interval mapped by
+#: θ = a + (b − a)(1 − cos πt)/2, which makes the 1/√(1 − 4τ cos θ) ends bounded)
+N_NODES = 64
 
-def _far_field(x, dx, q, k, omega, cos_chi, rho, g):
-    """Mean power [W per ζa²] and surge drift force [N per ζa²] of the waves radiated by a
-    line of strips at ``x`` (n,) with lengths ``dx`` whose 2-D outgoing wave amplitudes
-    (each side, per unit incident amplitude) are ``q`` (n, m), at wave number ``k`` and
-    frequency ``omega`` (m,), for an incident wave travelling at cos χ (m,):
 
-        dP/dθ = ρ g c_g k/(4π) |Q(θ)|²,  Q(θ) = Σ q e^{−ikx cos θ} dx,
-        F_x = (k/ω) ∫ dP/dθ (cos χ − cos θ) dθ,
+def _branches(k_e, we, u, g, kappa_max=None):
+    """The far field's wave systems at forward speed for one table entry: a list of (κ(θ),
+    θ, quadrature weight) over Maruo's intervals, κ the wave numbers that meet the
+    encounter frequency ω_e in the frame of the ship, (ω_e + κU cos θ)² = gκ:
 
-    the momentum the scattered waves take from the incident wave (energy over phase speed
-    along its direction) less the momentum they carry away. The constant makes the power of
-    a long uniform line equal to the 2-D strips' ρ g c_g |q|² per unit length."""
-    theta = 2.0 * jnp.pi * (jnp.arange(N_DIRECTIONS) + 0.5) / N_DIRECTIONS
-    phase = jnp.exp(-1j * k[None, :, None] * x[:, None, None] * jnp.cos(theta)[None, None])
-    big_q = jnp.einsum("n,nm,nmt->mt", dx, q, phase)  # (m, θ)
-    const = rho * g * (g / (2.0 * omega)) * k / (4.0 * jnp.pi)
-    dens = const[:, None] * jnp.abs(big_q) ** 2
-    d_theta = 2.0 * jnp.pi / N_DIRECTIONS
-    power = jnp.sum(dens, axis=1) * d_theta
-    lost = jnp.sum(dens * (cos_chi[:, None] - jnp.cos(theta)[None]), axis=1)
-    force = k / omega * lost * d_theta
-    return power, force
+        κ₂ = 2ω_e²/(g (1 − 2τc + r)),  κ₁ = ω_e²/(U²c² κ₂),  r = √(1 − 4τc),  c = cos θ,
+
+    τ = Uω_e/g. Waves exist for c ≤ c_top = min(1, 1/4τ) (above τ = 1/4 none runs straight
+    ahead); κ₂ (increasing in c) all round, κ₁ ahead (c > 0, decreasing in c) and behind
+    (c < 0, decreasing in |c|). With ``kappa_max`` (None: no limit) each system keeps only
+    its waves up to it; where a system reaches it, ω_e + κU c = ±√(gκ) gives the direction,
+    c = (±√(gκ_max) − ω_e)/(κ_max U) (+ for κ₂ and κ₁ ahead, − behind), so that every
+    interval's integrand is smooth."""
+    tau = u * we / g
+    c_top = jnp.minimum(1.0, 0.25 / jnp.maximum(tau, 1e-300))
+
+    def k2(c):
+        r = jnp.sqrt(jnp.maximum(1.0 - 4.0 * tau * c, 0.0))
+        return 2.0 * we**2 / (g * (1.0 - 2.0 * tau * c + r))
+
+    def k1(c):
+        return we**2 / (u**2 * c**2 * k2(c))
+
+    if kappa_max is None:
+        c_ahead, c_two, c_behind = 0.0, c_top, 0.0
+    else:
+        root_g = jnp.sqrt(g * kappa_max)
+        cut = (root_g - we) / (kappa_max * u)
+        c_ahead = jnp.where(k1(c_top) <= kappa_max, jnp.clip(cut, 0.0, c_top), c_top)
+        inside = jnp.where(k2(-1.0) <= kappa_max, jnp.clip(cut, -1.0, c_top), -1.0)
+        c_two = jnp.where(k2(c_top) <= kappa_max, c_top, inside)
+        c_behind = jnp.clip((-root_g - we) / (kappa_max * u), -1.0, 0.0)
+    alpha0 = jnp.arccos(c_top)
+    t, w = np.polynomial.legendre.leggauss(N_NODES)
+    t, w = 0.5 * (t + 1.0), 0.5 * w
+
+    def nodes(a, b):
+        theta = a + (b - a) * 0.5 * (1.0 - np.cos(np.pi * t))
+        return theta, w * (b - a) * 0.5 * np.pi * np.sin(np.pi * t)
+
+    ahead, two, behind = jnp.arccos(c_ahead), jnp.arccos(c_two), jnp.arccos(c_behind)
+    out = [
+        (k1, *nodes(alpha0, ahead)),
+        (k1, *nodes(-ahead, -alpha0)),
+        (k1, *nodes(behind, 2.0 * jnp.pi - behind)),
+        (k2, *nodes(two, 2.0 * jnp.pi - two)),
+    ]
+    return [(kf(jnp.cos(th)), th, wt) for kf, th, wt in out]
+
+
+def _far_field(x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None):
+    """Mean added resistance [N per ζa², > 0 astern] by Maruo's (1960) far-field momentum
+    balance, for one table entry: the waves radiated by a line of strips at ``x`` (n,) with
+    lengths ``dx``, whose outgoing waves of wave number κ and direction θ have amplitudes
+    ``amp(κ, sin θ)`` (n, T) per unit length and incident amplitude (normalised so that a
+    strip's own 2-D waves, κ = k_e = ω_e²/g, are its 2-D amplitude), meet an incident wave
+    of wave number ``k`` travelling at cos χ. With the Kochin function
+    H(κ, θ) = √(g/k_e) Σ amp e^{−iκx cos θ} dx,
+
+        R = ρ/(8π) Σ_systems ∫ sgn(ω_e + κU cos θ) |H|² κ(κ cos θ − k cos χ)/√(1 − 4τ cos θ) dθ
+
+    over the wave systems of `_branches` (τ = Uω_e/g); the sign is that of the waves'
+    frequency in the earth's frame, so that the short waves of the κ₁ system behind the
+    ship, which run forward in the earth's frame, count with their true direction (as ω_e
+    → 0 the waves ahead and behind then add up to the steady Kelvin waves' resistance, where
+    the plain sign would cancel them; tested). The 1/√ factor is the Jacobian from Maruo's
+    integral over m = κ cos θ. At zero speed one system remains, κ = k = k_e, and R is the
+    momentum the scattered waves take from the incident wave less what they carry away,
+    ρk²/(8π) ∫ |H|² (cos θ − cos χ) dθ. κ₁ waves beyond ``kappa_max`` (None: none), a
+    station spacing's Nyquist limit (the stations cannot resolve them, and they only alias),
+    are left out."""
+    if u == 0:
+        theta = 2.0 * jnp.pi * (jnp.arange(N_DIRECTIONS) + 0.5) / N_DIRECTIONS
+        d_theta = jnp.full_like(theta, 2 * jnp.pi / N_DIRECTIONS)
+        systems = [(jnp.full_like(theta, k_e), theta, d_theta)]
+    else:
+        systems = _branches(k_e, we, u, g, kappa_max)
+    total = 0.0
+    for kappa, theta, wt in systems:
+        c = jnp.cos(theta)
+        kappa = jnp.where(jnp.isfinite(kappa), kappa, k_e)
+        a = amp(kappa, jnp.sin(theta))  # (n, T)
+        big_h = jnp.sqrt(g / k_e) * jnp.sum(
+            dx[:, None] * a * jnp.exp(-1j * kappa[None] * x[:, None] * c[None]), axis=0
+        )
+        root = jnp.sqrt(jnp.maximum(1.0 - 4.0 * u * we / g * c, 1e-12))
+        sign = jnp.sign(we + kappa * u * c)
+        dens = sign * jnp.abs(big_h) ** 2 * kappa * (kappa * c - k * cos_chi) / root
+        total = total + jnp.sum(dens * wt)
+    return rho / (8.0 * jnp.pi) * total
 
 
 def _maruo(hull: Hull, m: Motions, internals, rho, g):
-    v, k, w, beta = _relative_velocity(hull, m, internals, rho, g)
-    # each strip's outgoing wave per unit relative velocity, by Haskind from its beam-sea
-    # heave force: |A₃| = ω|X₃|/(ρg²) (the energy identity b₃₃ = ω|X₃|²/(ρg²)); the common
-    # phase factor of the relation drops out of |Q|²
-    q = w[None] / (rho * g**2) * internals["x3"] * v
-    _, fx = _far_field(hull.x, hull.dx, q, k, w, -jnp.cos(beta), rho, g)
-    return -fx
+    v, k, _, beta = _relative_velocity(hull, m, internals, rho, g)
+    we = jnp.abs(internals["we_solved"])
+    # each strip's outgoing 2-D wave per unit relative velocity, by Haskind from its
+    # beam-sea heave force: |A₃| = ω_e|X₃|/(ρg²) (the energy identity b₃₃ = ω_e|X₃|²/(ρg²));
+    # the common phase factor of the relation drops out of |H|². Seen from afar the strips
+    # are a line of sources on the centreline with these strengths (slender-body matching)
+    q = we[None] / (rho * g**2) * internals["x3"] * v  # (n, m)
+    kappa_max = jnp.pi / jnp.max(hull.dx)
+
+    def entry(args):
+        q_j, k_j, we_j, cos_chi = args
+        amp = lambda kappa, s: jnp.broadcast_to(q_j[:, None], q_j.shape + kappa.shape)  # noqa: E731
+        return _far_field(
+            hull.x, hull.dx, amp, k_j, we_j**2 / g, we_j, cos_chi, m.u, rho, g, kappa_max
+        )
+
+    return jax.lax.map(entry, (q.T, k, we, -jnp.cos(beta)), batch_size=8)
 
 
 def added_resistance(
@@ -151,23 +240,21 @@ def added_resistance(
     hull's offsets."""
     if method not in METHODS:
         raise ValueError(f"parameter 'method' must be one of {METHODS}, got {method!r}")
-    if method == "maruo" and u != 0:
-        raise ValueError(
-            f"parameter 'u' = {u!r}: method 'maruo' is the zero-speed far field (its "
-            "forward-speed form, with the Doppler-shifted wave systems, is not built)"
-        )
     m, internals = _motions(
         hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g
     )
     solve = _maruo if method == "maruo" else _gerritsma_beukelman
     r = solve(hull, m, internals, rho, g)
+    valid = m.valid
+    if method == "maruo":  # the far field of waves that overtake the ship is not built
+        valid = valid & (m.omega_e > 0)
     return AddedResistance(
         omega=m.omega,
         beta=m.beta,
         u=m.u,
         r=r.reshape(m.valid.shape),
         motions=m,
-        valid=m.valid,
+        valid=valid,
         method=method,
     )
 
