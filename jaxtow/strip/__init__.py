@@ -6,8 +6,9 @@ of the wave source, with its own derivative rule), `_sections` (the 2-D radiatio
 diffraction of a section, `section_coefficients`), `_hull` (hulls by stations, the box and
 Wigley hulls, offsets files, and the zero-speed strip integrals, `hull_coefficients`),
 `_motions` (Salvesen-Tuck-Faltinsen motions with forward speed, `motions`),
-`_resistance` (added resistance by Gerritsma-Beukelman, `added_resistance`, and a
-zero-speed drift table by the R-function method, `drift_qtf`).
+`_resistance` (added resistance by Gerritsma-Beukelman and by the strips' far field in
+Maruo's momentum balance, `added_resistance`, and a zero-speed drift table by the
+R-function method, `drift_qtf`).
 """
 
 from typing import TYPE_CHECKING
@@ -30,6 +31,7 @@ if TYPE_CHECKING:
         wigley as wigley,
     )
     from ._motions import (
+        FROUDE_LIMIT as FROUDE_LIMIT,
         Motions as Motions,
         default_radii as default_radii,
         encounter_frequency as encounter_frequency,
@@ -68,6 +70,7 @@ __all__ = [
     "encounter_frequency",
     "default_radii",
     "rigid_body_matrices",
+    "FROUDE_LIMIT",
     "added_resistance",
     "AddedResistance",
     "drift_qtf",

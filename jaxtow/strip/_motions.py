@@ -297,6 +297,7 @@ def _motions(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, r
 
 __all__ = [
     "MODES",
+    "FROUDE_LIMIT",
     "Motions",
     "motions",
     "encounter_frequency",
