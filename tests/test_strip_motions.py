@@ -244,7 +244,7 @@ def test_far_field_of_a_line_of_strips(length, omega):
     edges = np.linspace(-length / 2, length / 2, n + 1)
     x, dx = jnp.asarray(0.5 * (edges[1:] + edges[:-1])), jnp.full(n, length / n)
     k = omega**2 / G
-    amp = lambda kappa, s: jnp.ones((n,) + kappa.shape, complex)  # noqa: E731
+    amp = lambda kappa: jnp.ones((n,) + kappa.shape, complex)  # noqa: E731
     r = float(_far_field(x, dx, amp, k, k, omega, -1.0, 0.0, 1025.0, G))
     cg = G / (2 * omega)
     if k * length > 10:
@@ -299,7 +299,7 @@ def test_maruo_steady_limit_adds_the_waves_ahead_and_behind():
 
     u, f, we = 2.0, 1.0, 1e-3
     k0, k_e = G / u**2, we**2 / G
-    amp = lambda kappa, s: (jnp.exp(-kappa * f) * jnp.sqrt(k_e / G))[None]  # noqa: E731
+    amp = lambda kappa: (jnp.exp(-kappa * f) * jnp.sqrt(k_e / G))[None]  # noqa: E731
     r = float(_far_field(jnp.zeros(1), jnp.ones(1), amp, 0.0, k_e, we, -1.0, u, 1025.0, G))
     kelvin = quad(lambda t: np.exp(-2 * k0 * f / np.cos(t) ** 2) / np.cos(t) ** 3, 0, np.pi / 2)
     assert r == pytest.approx(1025.0 * k0**2 / (2 * np.pi) * kelvin[0], rel=1e-3)

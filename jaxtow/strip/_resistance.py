@@ -160,11 +160,11 @@ def _branches(k_e, we, u, g, kappa_max=None):
 
 def _far_field(x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None):
     """Mean added resistance [N per ζa², > 0 astern] by Maruo's (1960) far-field momentum
-    balance, for one table entry: the waves radiated by a line of strips at ``x`` (n,) with
-    lengths ``dx``, whose outgoing waves of wave number κ and direction θ have amplitudes
-    ``amp(κ, sin θ)`` (n, T) per unit length and incident amplitude (normalised so that a
-    strip's own 2-D waves, κ = k_e = ω_e²/g, are its 2-D amplitude), meet an incident wave
-    of wave number ``k`` travelling at cos χ. With the Kochin function
+    balance, for one table entry: the waves radiated by a line of sources at ``x`` (n,) with
+    lengths ``dx``, whose outgoing waves of wave number κ have amplitudes ``amp(κ)`` (n, T)
+    per unit length and incident amplitude (normalised so that a strip's own 2-D waves,
+    κ = k_e = ω_e²/g, are its 2-D amplitude; the strips give the same for every κ), meet an
+    incident wave of wave number ``k`` travelling at cos χ. With the Kochin function
     H(κ, θ) = √(g/k_e) Σ amp e^{−iκx cos θ} dx,
 
         R = ρ/(8π) Σ_systems ∫ sgn(ω_e + κU cos θ) |H|² κ(κ cos θ − k cos χ)/√(1 − 4τ cos θ) dθ
@@ -176,7 +176,7 @@ def _far_field(x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None):
     the plain sign would cancel them; tested). The 1/√ factor is the Jacobian from Maruo's
     integral over m = κ cos θ. At zero speed one system remains, κ = k = k_e, and R is the
     momentum the scattered waves take from the incident wave less what they carry away,
-    ρk²/(8π) ∫ |H|² (cos θ − cos χ) dθ. κ₁ waves beyond ``kappa_max`` (None: none), a
+    ρk²/(8π) ∫ |H|² (cos θ − cos χ) dθ. At speed, waves beyond ``kappa_max`` (None: none), a
     station spacing's Nyquist limit (the stations cannot resolve them, and they only alias),
     are left out."""
     if u == 0:
@@ -189,7 +189,7 @@ def _far_field(x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None):
     for kappa, theta, wt in systems:
         c = jnp.cos(theta)
         kappa = jnp.where(jnp.isfinite(kappa), kappa, k_e)
-        a = amp(kappa, jnp.sin(theta))  # (n, T)
+        a = amp(kappa)  # (n, T)
         big_h = jnp.sqrt(g / k_e) * jnp.sum(
             dx[:, None] * a * jnp.exp(-1j * kappa[None] * x[:, None] * c[None]), axis=0
         )
@@ -212,7 +212,7 @@ def _maruo(hull: Hull, m: Motions, internals, rho, g):
 
     def entry(args):
         q_j, k_j, we_j, cos_chi = args
-        amp = lambda kappa, s: jnp.broadcast_to(q_j[:, None], q_j.shape + kappa.shape)  # noqa: E731
+        amp = lambda kappa: jnp.broadcast_to(q_j[:, None], q_j.shape + kappa.shape)  # noqa: E731
         return _far_field(
             hull.x, hull.dx, amp, k_j, we_j**2 / g, we_j, cos_chi, m.u, rho, g, kappa_max
         )
