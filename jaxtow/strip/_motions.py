@@ -73,8 +73,8 @@ class Motions(eqx.Module):
 
 #: The highest Froude number U/√(gL) at which the motions are marked valid: strip theory
 #: assumes a moderate speed, and its usual validations reach Fn 0.4 (Journée's 1992 Wigley
-#: experiments; Salvesen, Tuck & Faltinsen 1970 compare up to the Series 60's service
-#: speeds). An estimate of the theory's range, not a sharp limit. The parameter τ = Uω_e/g
+#: experiments ran at Fn 0.2, 0.3 and 0.4). An estimate of the theory's range, not a sharp
+#: limit. The parameter τ = Uω_e/g
 #: is no limit of it: τ > 1/4, where no radiated wave runs ahead of the ship, is the usual
 #: case in head seas (a Wigley hull at Fn 0.2 has τ ≈ 0.75 at its motion peak), and the
 #: far-field resistance (`maruo`) takes it into account.
