@@ -15,16 +15,19 @@ import signal
 import threading
 
 _REQUESTED = threading.Event()
+_ACTIVE = threading.Event()  # inside `sticky`
 
 
 def requested() -> bool:
-    """Whether a Ctrl-C arrived since `sticky` began."""
-    return _REQUESTED.is_set()
+    """Whether a Ctrl-C arrived since `sticky` began (always False outside it)."""
+    return _ACTIVE.is_set() and _REQUESTED.is_set()
 
 
 def request() -> None:
-    """Record a Ctrl-C (for handlers that hold the interrupt for a while)."""
-    _REQUESTED.set()
+    """Record a Ctrl-C (for handlers that hold the interrupt for a while); outside `sticky`
+    nothing is recorded, so a notebook's interrupt does not stop a later study."""
+    if _ACTIVE.is_set():
+        _REQUESTED.set()
 
 
 def _handler(signum, frame):
@@ -39,8 +42,11 @@ def sticky():
         yield
         return
     _REQUESTED.clear()
+    _ACTIVE.set()
     previous = signal.signal(signal.SIGINT, _handler)
     try:
         yield
     finally:
         signal.signal(signal.SIGINT, previous)
+        _ACTIVE.clear()
+        _REQUESTED.clear()

@@ -172,3 +172,19 @@ def test_a_swallowed_ctrl_c_still_stops_the_study_at_the_next_step():
         with pytest.raises(KeyboardInterrupt):
             steps.run("two", "two", lambda: None)
     assert steps.k == 1  # the second step never started
+
+
+def test_a_ctrl_c_outside_the_command_line_does_not_stop_a_later_study():
+    """Outside `sticky` (a notebook, a script) an interrupt recorded by a held write is not
+    remembered, and when `sticky` ends its record goes with it: a later study runs."""
+    from jaxtow._interrupt import request, requested, sticky
+    from jaxtow.studies._assessment import Steps
+
+    request()
+    assert not requested()
+    with sticky():
+        request()
+        assert requested()
+    assert not requested()
+    steps = Steps(1, enabled=False)
+    assert steps.run("one", "one", lambda: 1) == 1

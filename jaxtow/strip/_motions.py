@@ -74,10 +74,9 @@ class Motions(eqx.Module):
 #: The highest Froude number U/√(gL) at which the motions are marked valid: strip theory
 #: assumes a moderate speed, and its usual validations reach Fn 0.4 (Journée's 1992 Wigley
 #: experiments ran at Fn 0.2, 0.3 and 0.4). An estimate of the theory's range, not a sharp
-#: limit. The parameter τ = Uω_e/g
-#: is no limit of it: τ > 1/4, where no radiated wave runs ahead of the ship, is the usual
-#: case in head seas (a Wigley hull at Fn 0.2 has τ ≈ 0.75 at its motion peak), and the
-#: far-field resistance (`maruo`) takes it into account.
+#: limit. The parameter τ = Uω_e/g is no limit of it: τ > 1/4, where no radiated wave runs
+#: ahead of the ship, is the usual case in head seas (a Wigley hull at Fn 0.2 has τ ≈ 0.75
+#: at its motion peak), and the far-field resistance (`maruo`) takes it into account.
 FROUDE_LIMIT = 0.4
 
 
@@ -151,7 +150,8 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     w_flat = jnp.repeat(omega, beta.shape[0])
     b_flat = jnp.tile(beta, omega.shape[0])
     we_true = encounter_frequency(w_flat, b_flat, u, g)
-    floor = 0.3 * np.sqrt(g / float(jnp.sum(hull.dx)))  # below it: invalid (`valid`)
+    length = float(jnp.sum(hull.dx))
+    floor = 0.3 * np.sqrt(g / length)  # below it: invalid (`valid`)
     # an encounter frequency of zero (following seas) is moved off zero for the solve, so
     # that the results stay finite (and marked invalid), not NaN
     tiny = 1e-3 * floor
@@ -173,8 +173,7 @@ def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encount
     h = -(we[:, None, None] ** 2) * (mm + added) - 1j * we[:, None, None] * damping_v + cc
     rao = jnp.linalg.solve(h, f[..., None])[..., 0]
     resolved = jnp.asarray(inside) & (jnp.abs(we_true) >= floor * (1 - 1e-12))
-    froude = u / np.sqrt(g * float(jnp.sum(hull.dx)))
-    valid = resolved & (froude <= FROUDE_LIMIT * (1 + 1e-9))
+    valid = resolved & (u / np.sqrt(g * length) <= FROUDE_LIMIT * (1 + 1e-9))
     return dict(
         we=we_true,
         we_solved=we,

@@ -208,7 +208,9 @@ def _maruo(hull: Hull, m: Motions, internals, rho, g):
     # the common phase factor of the relation drops out of |H|². Seen from afar the strips
     # are a line of sources on the centreline with these strengths (slender-body matching)
     q = we[None] / (rho * g**2) * internals["x3"] * v  # (n, m)
-    kappa_max = jnp.pi / jnp.max(hull.dx)
+    # a numerical limit, not physics: held out of the derivatives (its interval ends pass
+    # through arccos, whose slope is infinite where they saturate at cos θ = ±1)
+    kappa_max = jax.lax.stop_gradient(jnp.pi / jnp.max(hull.dx))
 
     def entry(args):
         q_j, k_j, we_j, cos_chi = args
