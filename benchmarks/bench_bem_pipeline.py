@@ -68,11 +68,9 @@ def main(argv=None):
     cfg = read_config("barge2")
     cfg["waves"]["omega"] = [0.3, 1.5, args.n_omega]
     cfg["hull"]["panel_size"] = args.panel_size
-    builder, size, omega, beta, kw = build(cfg, args.panel_size)
+    builder, size, omega, beta, kw, loading = build(cfg, args.panel_size)
     mesh = builder(size)
-    body = rigid_body(
-        mesh, kw.get("cog_z"), radii=kw.get("radii"), roll_damping=kw.get("roll_damping")
-    )
+    body = rigid_body(mesh, loading(mesh))
     print(f"{mesh.n_panels} hull panels, {omega.size} frequencies x {beta.size} headings")
 
     with tempfile.TemporaryDirectory() as tmp:

@@ -104,7 +104,7 @@ def capytaine_speed():
     om = np.linspace(0.2, 1.5, TABLE["n_omega"])
     beta = np.radians(np.linspace(0.0, 180.0, TABLE["n_beta"]))
     t0 = time.perf_counter()
-    box_barge_drift(L, B, T, Z_G + T, om, beta, panel_size=2.0)
+    box_barge_drift(L, B, T, om, beta, loading=LOADING, panel_size=2.0)
     return time.perf_counter() - t0
 
 
@@ -119,7 +119,7 @@ def rao_rows():
     rakes = {"barge1": 0.0, "barge2": presets.barge2_rake(T)["extent"]}
     for name, (hull, _) in hulls().items():
         s = np.asarray(strip.motions(hull, np.array(RAO_OMEGA), beta, z_g=Z_G).rao)
-        ds = box_barge_drift(L, B, T, Z_G + T, RAO_OMEGA, beta, rake=rakes[name]).dataset
+        ds = box_barge_drift(L, B, T, RAO_OMEGA, beta, loading=LOADING, rake=rakes[name]).dataset
         p = np.asarray(rao(ds))  # (omega, beta, dof)
         dofs = [str(d) for d in ds.dof.values]
         for i, w in enumerate(RAO_OMEGA):

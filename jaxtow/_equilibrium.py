@@ -18,7 +18,7 @@ Roots where F touches zero without changing sign (exactly at a pitchfork or fold
 bracketed; away from such points every root is found.
 
 Naming: equilibria are ordered by ascending ψ and labelled by ``branch`` = −1 (ψ < 0),
-0 (straight behind the tug, ψ = 0) and +1 (ψ > 0). Thesis chapter 2 calls these positions
+0 (straight behind the tug: `straight_behind`) and +1 (ψ > 0). Thesis chapter 2 calls these positions
 1, 2 and 3; chapter 6 calls them 2, 3 and 4.
 """
 
@@ -38,8 +38,25 @@ from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._towline import Towline
 from .forces._base import NoExternalForce
 
-#: Tolerance below which |ψ| counts as straight behind the tug.
-STRAIGHT_TOL = 1e-9
+#: The largest heading an equilibrium straight behind the tug may have [rad] (1°): in a
+#: symmetric sea it lies at ψ = 0 to the solver's precision; wind, waves or current from an
+#: angle move it a little. `straight_behind` is the one definition.
+STRAIGHT_LIMIT = math.radians(1.0)
+
+
+def straight_behind(psi, found):
+    """Which equilibrium is straight behind the tug (the thesis's position 3): the found
+    equilibrium nearest ψ = 0, where it lies within `STRAIGHT_LIMIT` of it. ``psi``,
+    ``found`` (..., k) [rad, bool] → a boolean mask (..., k) with at most one True along the
+    last axis. NumPy or JAX arrays alike (the one definition of the sweeps' ``branch`` 0,
+    the study's straight-behind verdict and the maps)."""
+    xp = jnp if isinstance(psi, jax.Array) or isinstance(found, jax.Array) else np
+    dist = xp.where(found, xp.abs(psi), xp.inf)
+    nearest = xp.argmin(dist, axis=-1)
+    one = xp.arange(dist.shape[-1]) == nearest[..., None]
+    return one & (dist <= STRAIGHT_LIMIT)
+
+
 #: Headings evaluated together in the residual scan (bounds memory for costly force models).
 SCAN_BATCH = 64
 
@@ -154,7 +171,7 @@ def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
     residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady, throw=False))))(
         state
     )
-    branch = jnp.where(jnp.abs(psi) <= STRAIGHT_TOL, 0, jnp.sign(psi)).astype(jnp.int32)
+    branch = jnp.where(straight_behind(psi, found), 0, jnp.sign(psi)).astype(jnp.int32)
     return Equilibria(
         state=state,
         psi=psi,

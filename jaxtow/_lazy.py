@@ -43,9 +43,12 @@ def lazy_table(source: str) -> dict[str, tuple[str | None, str]]:
 
 
 def attach(package: str, file: str):
-    """``(__getattr__, __dir__)`` of ``package`` (its ``__name__``) whose source file
-    ``file`` (its ``__file__``) lists its lazy names as described in the module docstring."""
+    """``(__getattr__, __dir__, __all__)`` of ``package`` (its ``__name__``) whose source
+    file ``file`` (its ``__file__``) lists its lazy names as described in the module
+    docstring. ``__all__`` is read from the same block (its names, less the submodules it
+    lists with ``from . import name``), so that a package lists its public names once."""
     table = lazy_table(Path(file).read_text(encoding="utf-8"))
+    public = [name for name, (module, _) in table.items() if module is not None]
 
     def __getattr__(name: str):
         try:
@@ -65,4 +68,4 @@ def attach(package: str, file: str):
     def __dir__():
         return sorted(set(vars(sys.modules[package])) | set(table))
 
-    return __getattr__, __dir__
+    return __getattr__, __dir__, public

@@ -1,7 +1,10 @@
 """Post-processing of time-domain runs: earth-frame trajectory, force histories, fishtailing
-and damping metrics (thesis sections 6.1, 7.3; eqs 2.15-2.18, 7.4, 7.5).
+and damping metrics (thesis sections 6.1, 7.3; eqs 2.15-2.18, 7.4, 7.5), as typed results
+(`Trajectory`, `FishtailMetrics`, `DampingRatio`).
 
-These work on saved series (NumPy), after the solve; the solve itself stays in JAX.
+These run on the host, in NumPy, over the saved series after the solve (the solve itself
+stays in JAX): they find extrema and crossings of one record, which no kernel needs to
+differentiate or batch.
 """
 
 from __future__ import annotations
@@ -13,11 +16,62 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from ._dynamics import TowModel, force_breakdown, sway_offset
+from ._dynamics import ForceBreakdown, TowModel, force_breakdown, sway_offset
 from ._equilibrium import equilibria as find_equilibria
 
 
-def trajectory(model: TowModel, sim) -> dict:
+@dataclasses.dataclass(frozen=True)
+class Trajectory:
+    """Earth-frame positions (in L) along a run at the times ``t`` (by L/U): the tug at
+    (``tug_x``, ``tug_y``), the hawser point, the CoG, the sway offset y' and the heading
+    ``psi`` [rad]."""
+
+    t: np.ndarray
+    tug_x: np.ndarray
+    tug_y: np.ndarray
+    hawser_x: np.ndarray
+    hawser_y: np.ndarray
+    cog_x: np.ndarray
+    cog_y: np.ndarray
+    sway_offset: np.ndarray
+    psi: np.ndarray
+
+
+@dataclasses.dataclass(frozen=True)
+class DampingRatio:
+    """`damping_ratio`'s answer: ``zeta`` (None where no oscillation was seen), the
+    ``method`` (log_decrement | overshoot | no_oscillation | not_converged), the number of
+    peaks used, and the log decrement δ or the overshoot where that method was used."""
+
+    zeta: float | None
+    method: str
+    n_peaks: int
+    delta: float | None = None
+    overshoot: float | None = None
+
+
+@dataclasses.dataclass(frozen=True)
+class FishtailMetrics:
+    """`fishtail_metrics`'s answer: the ``outcome`` (converged, limit_cycle, growing,
+    undetermined), ``converged``, the ``path_width`` (peak-to-peak sway offset y', by L),
+    the ``yaw_range`` (min, max ψ) [deg], the ``slewing_period`` (by L/U; None without a
+    cycle), the ``equilibrium`` it converged to (an index, else None), the heading's
+    ``damping``, and whether the run ``ended_early``, where (``t_end``), and the share of
+    samples with a ``slack`` line."""
+
+    outcome: str
+    converged: bool
+    path_width: float | None
+    yaw_range: tuple[float, float] | None
+    slewing_period: float | None
+    equilibrium: int | None
+    damping: DampingRatio
+    ended_early: bool
+    t_end: float
+    slack: float
+
+
+def trajectory(model: TowModel, sim) -> Trajectory:
     """Earth-frame positions (in L) along a run: the tug at (t', 0), the hawser point
     H = tug + (−l cos γ, l sin γ), the CoG = H − x_p (cos ψ, sin ψ), and the sway offset
     y' = l sin γ − x_p sin ψ (eqs 2.15-2.18). Only valid (finite) samples are returned."""
@@ -27,7 +81,7 @@ def trajectory(model: TowModel, sim) -> dict:
     xp, yp = float(model.towline.xp), float(model.towline.yp)
     l, g, psi = y[:, 3], y[:, 4], y[:, 5]
     hx, hy = t - l * np.cos(g), l * np.sin(g)
-    return dict(
+    return Trajectory(
         t=t,
         tug_x=t,
         tug_y=np.zeros_like(t),
@@ -40,16 +94,23 @@ def trajectory(model: TowModel, sim) -> dict:
     )
 
 
-def force_history(model: TowModel, sim) -> dict:
+@dataclasses.dataclass(frozen=True)
+class ForceHistory:
+    """`force_history`'s answer: the times ``t`` (by L/U) and the `jaxtow.ForceBreakdown`
+    ``forces`` at each (every field with a leading time axis: (n, 3), the tension (n,))."""
+
+    t: np.ndarray
+    forces: ForceBreakdown
+
+
+def force_history(model: TowModel, sim) -> ForceHistory:
     """The force breakdown (manoeuvring, towline, coupling, external; each (n, 3)) and the
     tension along a run (thesis fig. 7.6)."""
     ok = np.asarray(sim.valid)
     ys = jnp.asarray(np.asarray(sim.ys)[ok])
     ts = jnp.asarray(np.asarray(sim.ts)[ok])
     fb = jax.vmap(lambda t, y: force_breakdown(t, y, model))(ts, ys)
-    return {f.name: np.asarray(getattr(fb, f.name)) for f in dataclasses.fields(fb)} | {
-        "t": np.asarray(ts)
-    }
+    return ForceHistory(t=np.asarray(ts), forces=jax.tree_util.tree_map(np.asarray, fb))
 
 
 def _extrema(t, x):
@@ -70,7 +131,7 @@ def _extrema(t, x):
     return np.array(out_t), np.array(out_x), np.array(kind)
 
 
-def damping_ratio(t, x, x_final: float | None = None) -> dict:
+def damping_ratio(t, x, x_final: float | None = None) -> DampingRatio:
     """Damping ratio of a decaying oscillation about ``x_final`` (default: last sample).
 
     Chosen automatically (thesis section 7.3.2):
@@ -95,7 +156,7 @@ def damping_ratio(t, x, x_final: float | None = None) -> dict:
     if len(best) >= 2:
         n = len(best) - 1
         delta = math.log(abs(best[0]) / abs(best[-1])) / n
-        return dict(
+        return DampingRatio(
             zeta=delta / math.sqrt(4 * math.pi**2 + delta**2),
             method="log_decrement",
             delta=delta,
@@ -103,34 +164,29 @@ def damping_ratio(t, x, x_final: float | None = None) -> dict:
         )
     if len(ev) >= 1 and abs(e[0]) > 0 and np.sign(ev[0]) != np.sign(e[0]):
         lnpo = math.log(abs(ev[0]) / abs(e[0]))
-        return dict(
+        return DampingRatio(
             zeta=math.sqrt(lnpo**2 / (math.pi**2 + lnpo**2)),
             method="overshoot",
             overshoot=abs(ev[0]) / abs(e[0]),
             n_peaks=1,
         )
-    return dict(zeta=None, method="no_oscillation", n_peaks=int(len(ev)))
+    return DampingRatio(zeta=None, method="no_oscillation", n_peaks=int(len(ev)))
 
 
 def fishtail_metrics(
     model: TowModel, sim, *, transient: float = 0.5, tol: float = 1e-3, equilibria=None
-) -> dict:
-    """Behaviour of a run after the transient (the last ``1 − transient`` of the record).
-
-    Returns: ``outcome`` ('converged', 'limit_cycle', 'growing' or 'undetermined'),
-    ``converged`` (bool), ``path_width`` (peak-to-peak sway offset y' in L), ``yaw_range``
-    (min, max ψ in degrees), ``slewing_period`` (non-dimensional, None if no cycle),
-    ``equilibrium`` (index into ``equilibria`` closest to the final state when converged),
-    the damping ratio of the heading (`damping_ratio`), and flags ``ended_early``,
-    ``t_end`` and ``slack`` (fraction of samples with a slack towline: zero tension, l' < l0'
-    for the elastic laws; a line with weight never goes slack).
-    """
+) -> FishtailMetrics:
+    """Behaviour of a run after the transient (the last ``1 − transient`` of the record), as
+    `FishtailMetrics`: the outcome, path width, yaw range and slewing period, the
+    equilibrium it converged to (an index into ``equilibria``), the heading's damping ratio
+    (`damping_ratio`), and the ``slack`` share (zero tension, l' < l0' for the elastic
+    laws; a line with weight never goes slack)."""
 
     tr = trajectory(model, sim)
-    t, yoff, psi = tr["t"], tr["sway_offset"], tr["psi"]
+    t, yoff, psi = tr.t, tr.sway_offset, tr.psi
     ok = np.asarray(sim.valid)
     ys = np.asarray(sim.ys)[ok]
-    out = dict(
+    run = dict(
         ended_early=not bool(sim.success),
         t_end=float(t[-1]) if t.size else float(sim.ts[0]),
         slack=float(np.mean(np.asarray(jax.vmap(model.towline.tension)(ys[:, 3])) <= 0.0))
@@ -138,14 +194,15 @@ def fishtail_metrics(
         else 0.0,
     )
     if t.size < 8:
-        return out | dict(
+        return FishtailMetrics(
+            **run,
             outcome="undetermined",
             converged=False,
             path_width=None,
             yaw_range=None,
             slewing_period=None,
             equilibrium=None,
-            damping=dict(zeta=None, method="no_oscillation", n_peaks=0),
+            damping=DampingRatio(zeta=None, method="no_oscillation", n_peaks=0),
         )
     tail = t >= t[0] + transient * (t[-1] - t[0])
     yt, pt = yoff[tail], psi[tail]
@@ -173,7 +230,8 @@ def fishtail_metrics(
     if converged:
         eqs = equilibria if equilibria is not None else find_equilibria(model)
         eq_index = int(np.argmin(np.abs(np.asarray(eqs.psi) - psi[-1])))
-    return out | dict(
+    return FishtailMetrics(
+        **run,
         outcome=outcome,
         converged=bool(converged),
         path_width=width,
@@ -182,5 +240,5 @@ def fishtail_metrics(
         equilibrium=eq_index,
         damping=damping_ratio(t, psi)
         if converged
-        else dict(zeta=None, method="not_converged", n_peaks=0),
+        else DampingRatio(zeta=None, method="not_converged", n_peaks=0),
     )

@@ -15,9 +15,12 @@ derivatives of a root with respect to the parameters):
   the Jacobian is singular, ``well_posed=False``);
 * `polish`: a fixed number of scalar Newton steps after `bisect` (no termination test, so
   no solver is needed, and the residual is traced once: inside the sweep kernels this is
-  what keeps their tracing and compilation short).
+  what keeps their tracing and compilation short);
+* `bisect_fixed`: a fixed number of halvings of a bracket on a monotone predicate, for the
+  kernels that carry their own derivative rule and must take the same steps in every
+  member of a batch (the catenary's tension, the spectral abscissa's Routh tests).
 
-All three are pure and jittable; under `jax.vmap` every member of a batch takes as many
+All are pure and jittable; under `jax.vmap` every member of a batch takes as many
 steps as the slowest.
 """
 
@@ -110,6 +113,29 @@ def newton(
     options = {} if lower is None else dict(lower=lower, upper=upper)
     sol = optx.root_find(fn, solver, x0, args, options=options, max_steps=max_steps, throw=False)
     return sol.value, sol.result == optx.RESULTS.successful
+
+
+def bisect_fixed(below, lo, hi, steps: int):
+    """``steps`` halvings of the bracket [lo, hi] of a monotone predicate: ``below(x)`` is
+    True where the sought point lies below x (so [lo, mid] is kept) and False above it.
+    Returns the final bracket (lo, hi). No tolerance test and no derivative: for kernels
+    with their own JVP rule that run in lockstep under `jax.vmap`. With a bracket of Python
+    numbers it runs on the host, for a predicate that is no JAX function (a full
+    equilibrium search at each point)."""
+    if isinstance(lo, (int, float)) and isinstance(hi, (int, float)):
+        a, b = float(lo), float(hi)
+        for _ in range(steps):
+            m = 0.5 * (a + b)
+            a, b = (a, m) if below(m) else (m, b)
+        return a, b
+
+    def step(_, bracket):
+        a, b = bracket
+        m = 0.5 * (a + b)
+        keep_low = below(m)
+        return jnp.where(keep_low, a, m), jnp.where(keep_low, m, b)
+
+    return jax.lax.fori_loop(0, steps, step, (lo, hi))
 
 
 def polish(fn, x, args=None, *, steps: int = 2, lower=None, upper=None):

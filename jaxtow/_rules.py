@@ -37,6 +37,15 @@ from jax.core import Tracer
 from jaxtyping import Array, Bool, Int
 
 
+class ParameterError(ValueError):
+    """A bad value of a named parameter: ``parameter`` is its name, so that a caller (a tow
+    file's reader naming its key) need not read the message."""
+
+    def __init__(self, parameter: str, message: str):
+        super().__init__(message)
+        self.parameter = parameter
+
+
 def is_concrete(x) -> bool:
     """True if ``x`` holds concrete values (not a JAX tracer)."""
     return not isinstance(x, Tracer)
@@ -64,11 +73,11 @@ class Rule:
         try:
             v = np.asarray(x, dtype=float)
         except (TypeError, ValueError):
-            raise ValueError(f"parameter {name!r} must be a number, got {x!r}") from None
+            raise ParameterError(name, f"parameter {name!r} must be a number, got {x!r}") from None
         with np.errstate(invalid="ignore"):
             good = np.all(self.ok(np, v))
         if not good:
-            raise ValueError(f"parameter {name!r} {self.requirement}, got {v!r}")
+            raise ParameterError(name, f"parameter {name!r} {self.requirement}, got {v!r}")
 
     def traced(self, name: str, x) -> tuple:
         """Traced: the ``(predicate, message)`` pair for `guard` (predicate True = bad)."""
@@ -144,10 +153,11 @@ class Checked(eqx.Module):
                 continue
             rule.check(name, value)
             if name in scalar and is_concrete(value) and np.ndim(value) != 0:
-                raise ValueError(
+                raise ParameterError(
+                    name,
                     f"parameter {name!r} must be a single number, got shape {np.shape(value)} "
                     "(to evaluate many values, sweep it: jaxtow.sweep, or jax.vmap over "
-                    "jaxtow.with_parameters)"
+                    "jaxtow.with_parameters)",
                 )
 
     def checks(self) -> list:

@@ -15,6 +15,7 @@ import jax.numpy as jnp
 from jaxtyping import Array, Bool, Complex, Float, Int
 
 from ._dynamics import TowModel, unchecked_vector_field
+from ._roots import bisect_fixed
 from ._rules import guard
 
 STABLE, MARGINAL, UNSTABLE, INVALID = -1, 0, 1, 2
@@ -134,13 +135,8 @@ def _bisect_abscissa(c, iterations: int):
     scaled = c / radius ** jnp.arange(n + 1)  # roots μ = λ / R, |μ| ≤ 1
     one = jnp.ones((), c.dtype)
 
-    def step(_, bracket):
-        lo, hi = bracket
-        mid = 0.5 * (lo + hi)
-        below = _hurwitz(_taylor_shift(scaled, mid))  # every Re μ < mid: the abscissa is below
-        return jnp.where(below, lo, mid), jnp.where(below, mid, hi)
-
-    lo, hi = jax.lax.fori_loop(0, iterations, step, (-one, one))
+    # every Re μ < mid (a Hurwitz-stable shifted polynomial): the abscissa lies below mid
+    lo, hi = bisect_fixed(lambda mid: _hurwitz(_taylor_shift(scaled, mid)), -one, one, iterations)
     return jnp.where(jnp.all(jnp.isfinite(c)), radius * 0.5 * (lo + hi), jnp.nan)
 
 

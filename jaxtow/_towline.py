@@ -16,6 +16,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
+from ._roots import bisect_fixed
 from ._rules import NONNEGATIVE, POSITIVE, Checked, in_range, is_concrete, rule_field
 
 #: Documented range of the bow-hawser attachment point x_p' (distance of the attachment
@@ -206,13 +207,9 @@ def _catenary_tension(l, l0, EA, w):
     hi = jnp.log(EA * jnp.maximum(l, l0) / l0 + w * l0)  # X(hi) ≥ l: X ≥ H l0 / EA
     lo = hi - _CATENARY_LOG_SPAN
 
-    def step(_, bracket):
-        a, b = bracket
-        m = 0.5 * (a + b)
-        long = catenary_span(jnp.exp(m), l0, EA, w) > l
-        return jnp.where(long, a, m), jnp.where(long, m, b)
-
-    a, b = jax.lax.fori_loop(0, _CATENARY_BISECTIONS, step, (lo, hi))
+    a, b = bisect_fixed(
+        lambda m: catenary_span(jnp.exp(m), l0, EA, w) > l, lo, hi, _CATENARY_BISECTIONS
+    )
     # no root below the bracket: a weightless line shorter than l0 is slack
     taut = (l > 0) & (catenary_span(jnp.exp(lo), l0, EA, w) < l)
     return jnp.where(taut, jnp.exp(0.5 * (a + b)), 0.0)

@@ -18,10 +18,35 @@ from ._rules import POSITIVE, Checked, rule_field
 
 G = 9.80665  # m/s², standard gravity
 RHO_SEA = 1025.0  # kg/m³, sea-water density used throughout the thesis
+#: One tonne-force [N] (1000 kg under standard gravity): bollard pulls and breaking loads
+#: are quoted in t.
+TONNE_FORCE = 1000.0 * G
+#: One nautical mile [m].
+NAUTICAL_MILE = 1852.0
+#: One knot [m/s] (a nautical mile an hour).
+KNOT = NAUTICAL_MILE / 3600.0
 
 
 def _float(x):
     return jnp.asarray(x, dtype=float)
+
+
+class Water(eqx.Module):
+    """The water a hull floats in: density ``rho`` [kg/m³] and gravity ``g`` [m/s²] (static:
+    the constants of a computation, one value passed whole instead of two numbers)."""
+
+    rho: float = eqx.field(static=True, default=RHO_SEA)
+    g: float = eqx.field(static=True, default=G)
+
+    def __check_init__(self):
+        for name in ("rho", "g"):
+            val = getattr(self, name)
+            if not (isinstance(val, (int, float)) and math.isfinite(val) and val > 0):
+                raise ValueError(f"parameter {name!r} must be finite and > 0, got {val!r}")
+
+
+#: Sea water (ρ = 1025 kg/m³) under standard gravity.
+SEA_WATER = Water()
 
 
 class Scales(Checked):

@@ -65,6 +65,15 @@ ASSUMPTIONS = {
         "alone gives an unbounded roll resonance); 5 % of critical, a usual value "
         "for a barge without bilge keels; estimate",
     ),
+    "tug_efficiency": dict(
+        value=0.75,
+        units="-",
+        note="offshore towing efficiency 0.75: the usual share of the rated continuous "
+        "bollard pull a tug gives at sea; GL Noble Denton 0030 and DNV-ST-N001 tabulate it "
+        "against the bollard pull and Hs, a table that was not available to this project: "
+        "set [tug] efficiency (or a sea state's tug_efficiency) from the edition in use; "
+        "estimate",
+    ),
     "wind_height": dict(
         value=10.0,
         units="m",
@@ -156,7 +165,7 @@ SEA_STATES = {
 #: pull, pull vanishing at 7 m/s (13.6 kn), offshore towing efficiency 0.75 (the usual
 #: industry factor). Not from the thesis (its tug is not specified).
 ILLUSTRATIVE_TUG = dict(
-    bollard_pull=40.0 * 9.80665e3, free_speed=7.0, efficiency=0.75, resistance_coefficient=0.0
+    bollard_pull_t=40.0, free_speed=7.0, efficiency=0.75, resistance_coefficient=0.0
 )
 
 # Published values, thesis Table 3.7 (Hong et al. [37], Nam et al. [51]).

@@ -28,10 +28,12 @@ import dataclasses
 import functools
 import math
 
+import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
 import optimistix as optx
+from jaxtyping import Array
 
 from ._dynamics import TowModel
 from ._equilibrium import _state_from_heading, heading_residual
@@ -47,6 +49,8 @@ __all__ = [
     "spectral_abscissa",
     "smooth_abscissa",
     "margin_terms",
+    "MarginTerms",
+    "StableValue",
     "design_objective",
     "DesignResult",
     "optimise_towline",
@@ -95,13 +99,23 @@ def smooth_abscissa(model: TowModel, y=None, tau: float = SMOOTHING):
     return tau * jax.nn.logsumexp(jnp.real(eigenvalues(model, y)) / tau)
 
 
-def margin_terms(model: TowModel, psi0=0.0, tau: float = SMOOTHING) -> dict:
-    """Stability terms of the straight-behind equilibrium: ``abscissa`` (max Re λ),
-    ``smooth`` (`smooth_abscissa`), ``psi`` (equilibrium heading), ``tension`` T',
-    ``converged``."""
+class MarginTerms(eqx.Module):
+    """Stability terms of the straight-behind equilibrium (`margin_terms`): ``abscissa``
+    (max Re λ'), ``smooth`` (`smooth_abscissa`), ``psi`` (its heading) [rad], ``tension``
+    T' and ``converged``."""
+
+    abscissa: Array
+    smooth: Array
+    psi: Array
+    tension: Array
+    converged: Array
+
+
+def margin_terms(model: TowModel, psi0=0.0, tau: float = SMOOTHING) -> MarginTerms:
+    """The `MarginTerms` of the straight-behind equilibrium (differentiable)."""
     y, psi, ok = straight_equilibrium(model, psi0)
     re = jnp.real(eigenvalues(model, y))
-    return dict(
+    return MarginTerms(
         abscissa=jnp.max(re),
         smooth=tau * jax.nn.logsumexp(re / tau),
         psi=psi,
@@ -149,14 +163,14 @@ def design_objective(
     terms = [
         margin_terms(_apply(m, params, s), tau=tau) for m, s in zip(models, ea_scales)
     ]  # few scenarios
-    a = jnp.stack([t["smooth"] for t in terms])
+    a = jnp.stack([t.smooth for t in terms])
     agg = tau * jax.nn.logsumexp(a / tau) if aggregate == "worst" else jnp.mean(a)
     pen = 0.0
     for t in terms:
-        pen = pen + jnp.maximum(jnp.abs(t["psi"]) - psi_limit, 0.0) ** 2
+        pen = pen + jnp.maximum(jnp.abs(t.psi) - psi_limit, 0.0) ** 2
         if tension_limit is not None:
-            pen = pen + jnp.maximum(t["tension"] - tension_limit, 0.0) ** 2
-        pen = pen + jnp.where(t["converged"], 0.0, 1.0 / penalty)
+            pen = pen + jnp.maximum(t.tension - tension_limit, 0.0) ** 2
+        pen = pen + jnp.where(t.converged, 0.0, 1.0 / penalty)
     return agg + penalty * pen, terms
 
 
@@ -208,9 +222,9 @@ def _summary(params, models, scales, opts):
     J, terms = design_objective(params, models, scales, **opts)
     return (
         float(J),
-        np.array([float(t["abscissa"]) for t in terms]),
-        np.array([float(t["psi"]) for t in terms]),
-        np.array([float(t["tension"]) for t in terms]),
+        np.array([float(t.abscissa) for t in terms]),
+        np.array([float(t.psi) for t in terms]),
+        np.array([float(t.tension) for t in terms]),
     )
 
 
@@ -401,6 +415,17 @@ def sensitivity_arrays(model: TowModel, parameters=None, *, sweep: dict | None =
 ADVICE_MARGIN = 0.01
 
 
+@dataclasses.dataclass(frozen=True)
+class StableValue:
+    """`stable_value`'s answer: the parameter's ``value``, max Re λ' there (``abscissa``), its
+    ``present`` value, and whether Newton's method ``converged`` to a stable point."""
+
+    value: float
+    abscissa: float
+    present: float
+    converged: bool
+
+
 def _abscissa_of(model: TowModel, name: str, value):
     """(max Re λ', converged) of the straight-behind equilibrium with parameter ``name`` set to
     ``value`` (no host callback: the caller checks the grid)."""
@@ -422,7 +447,7 @@ def stable_value(
     *,
     n: int = 17,
     margin: float = ADVICE_MARGIN,
-) -> dict | None:
+) -> StableValue | None:
     """The value of parameter ``name`` in [lo, hi] nearest its present one at which the
     straight-behind equilibrium is stable with max Re λ' = −``margin``: the smallest change
     of that one parameter that makes the tow follow the tug.
@@ -430,8 +455,8 @@ def stable_value(
     A scan of ``n`` values (one vmapped program) brackets the crossings of max Re λ' +
     margin; the one nearest the present value is refined by Newton's method with the
     derivative of the abscissa by autodiff through the equilibrium (implicit function
-    theorem) and the eigenvalues. Returns {``value``, ``abscissa`` (at it), ``present``,
-    ``converged``}, or None when no value in the range makes the tow stable."""
+    theorem) and the eigenvalues. Returns a `StableValue`, or None when no value in the
+    range makes the tow stable."""
     present = float(get_parameter(model, name))
     grid = np.linspace(lo, hi, n)
     check_values(model, name, grid)
@@ -453,6 +478,6 @@ def stable_value(
     value, converged = newton(f, jnp.asarray(v0), model, lower=grid[i], upper=grid[i + 1])
     value = float(value)
     abscissa = float(_abscissa_of(model, name, value)[0])
-    return dict(
+    return StableValue(
         value=value, abscissa=abscissa, present=present, converged=bool(converged) and abscissa < 0
     )

@@ -30,17 +30,14 @@ __all__ = [
     "check_yaw",
 ]
 
-TONNE = 9.80665e3  # N per tonne-force
-
 
 @dataclasses.dataclass(frozen=True)
 class Criteria:
     """The limits of a guideline (SI unless named otherwise) and where each comes from.
 
     ``wind_speed`` [m/s], ``hs`` [m], ``current_speed`` [m/s]: the weather criterion the
-    tug must hold the tow in (acting together, from ahead, zero speed over ground);
-    ``tug_efficiency``: the fraction of the rated continuous bollard pull available in that
-    weather; ``mbl_breaks`` [t], ``mbl_factors``: the MBL/BP law of `mbl_factor`;
+    tug must hold the tow in (acting together, from ahead, zero speed over ground; the tug's
+    efficiency is the tow's, one value: `check_bollard_pull`); ``mbl_breaks`` [t], ``mbl_factors``: the MBL/BP law of `mbl_factor`;
     ``length_factor`` [m]: the minimum towline length is ``length_factor``·BP/MBL;
     ``connection_ratio``: the MBL of bridles, pennants and shackles relative to the
     towline's; ``seabed_clearance`` [m]: the least clearance of the catenary above the
@@ -50,7 +47,6 @@ class Criteria:
     wind_speed: float = 20.0
     hs: float = 5.0
     current_speed: float = 0.5
-    tug_efficiency: float = 0.75
     mbl_breaks: tuple = (40.0, 90.0)
     mbl_factors: tuple = (3.0, 2.0)
     length_factor: float = 1800.0
@@ -81,9 +77,6 @@ _SHARED = {
     "wind_speed": _WEATHER,
     "hs": _WEATHER,
     "current_speed": _WEATHER,
-    "tug_efficiency": "estimate: 0.75, the usual offshore towing efficiency; the guideline's "
-    "table of efficiency against bollard pull and Hs was not available to this project: set "
-    "it in [criteria] from the edition in use",
     "mbl_breaks": "main towline MBL for unrestricted towages as the guideline is cited for: "
     "3.0 BP up to 40 t, (3.8 - BP/50) BP from 40 to 90 t, 2.0 BP above 90 t",
     "mbl_factors": "as mbl_breaks",
@@ -173,17 +166,20 @@ def minimum_towline_length(bollard_pull: float, mbl: float, c: Criteria | None =
     return c.length_factor * _positive("bollard_pull", bollard_pull) / _positive("mbl", mbl)
 
 
-def check_bollard_pull(required_t: float, available_t: float, c: Criteria) -> Check:
+def check_bollard_pull(
+    required_t: float, available_t: float, c: Criteria, *, efficiency_source: str = ""
+) -> Check:
     """The tug's rated continuous bollard pull [t] against the pull required to hold the tow
-    in the weather criterion [t] (towing force / tug efficiency)."""
+    in the weather criterion [t] (towing force / tug efficiency); ``efficiency_source`` says
+    where the efficiency came from ("estimate: ..." when it is the documented estimate)."""
     return Check(
         "bollard pull (hold the tow in the weather criterion)",
         float(available_t),
         float(required_t),
         "min",
         "t",
-        c.sources.get("tug_efficiency", ""),
-        c.estimate("tug_efficiency"),
+        efficiency_source or c.sources.get("hs", ""),
+        efficiency_source.startswith("estimate"),
     )
 
 

@@ -42,6 +42,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ._rules import ParameterError
 from ._towline import CatenaryTowline, CompositeTowline, Towline
 from ._units import RHO_SEA, G
 
@@ -141,11 +142,12 @@ class LineType:
 def _diameter(kind: str, d) -> float:
     lo, hi = _RANGE[kind]
     if isinstance(d, bool) or not isinstance(d, (int, float)) or not math.isfinite(d):
-        raise ValueError(f"diameter must be a finite number in metres, got {d!r}")
+        raise ParameterError("diameter", f"diameter must be a finite number in metres, got {d!r}")
     if not lo <= d <= hi:
-        raise ValueError(
+        raise ParameterError(
+            "diameter",
             f"diameter must lie in [{lo}, {hi}] m for {kind} (the published laws' range), "
-            f"got {d} m" + (" (a diameter in mm? give metres)" if d > 1 else "")
+            f"got {d} m" + (" (a diameter in mm? give metres)" if d > 1 else ""),
         )
     return float(d)
 
@@ -154,7 +156,7 @@ def wire_rope(diameter: float, core: str = "IWRC") -> LineType:
     """Steel wire of nominal ``diameter`` [m]: six-strand rope with ``core`` IWRC or FC, or
     ``core="spiral"``, sheathed spiral strand."""
     if core not in _WIRE:
-        raise ValueError(f"core must be one of {sorted(_WIRE)}, got {core!r}")
+        raise ParameterError("core", f"core must be one of {sorted(_WIRE)}, got {core!r}")
     d = _diameter("wire", diameter)
     m, ea, mbl, rho = _WIRE[core]
     mass = m * d**2
@@ -176,9 +178,9 @@ def chain(diameter: float, grade: str = "R3", kind: str = "studless") -> LineTyp
     """Chain of nominal (bar) ``diameter`` [m], ``grade`` (`CHAIN_GRADES`), ``kind``
     studless or studlink."""
     if grade not in CHAIN_GRADES:
-        raise ValueError(f"grade must be one of {list(CHAIN_GRADES)}, got {grade!r}")
+        raise ParameterError("grade", f"grade must be one of {list(CHAIN_GRADES)}, got {grade!r}")
     if kind not in _CHAIN:
-        raise ValueError(f"kind must be one of {sorted(_CHAIN)}, got {kind!r}")
+        raise ParameterError("kind", f"kind must be one of {sorted(_CHAIN)}, got {kind!r}")
     d = _diameter("chain", diameter)
     m, ea = _CHAIN[kind]
     mass = m * d**2
@@ -199,7 +201,9 @@ def fibre_rope(diameter: float, material: str = "polyester") -> LineType:
     """Nylon or polyester rope of nominal ``diameter`` [m] (linear secant EA; see
     `fit_power_law` for the load-dependent law)."""
     if material not in _FIBRE:
-        raise ValueError(f"material must be one of {sorted(_FIBRE)}, got {material!r}")
+        raise ParameterError(
+            "material", f"material must be one of {sorted(_FIBRE)}, got {material!r}"
+        )
     d = _diameter("fibre", diameter)
     m, (b2, b3), k, sg = _FIBRE[material]
     mass = m * d**2
@@ -228,7 +232,7 @@ def line(name: str, diameter: float, *, grade: str = "R3") -> LineType:
         return chain(diameter, grade, "studless" if name == "chain" else "studlink")
     if name in _FIBRE:
         return fibre_rope(diameter, name)
-    raise ValueError(f"line must be one of {list(LINES)}, got {name!r}")
+    raise ParameterError("line", f"line must be one of {list(LINES)}, got {name!r}")
 
 
 def composite(segments, *, scales, xp: float, yp: float = 0.0):

@@ -63,7 +63,7 @@ def test_barge2_mesh_matches_the_waterline_and_block_coefficient():
 
 def test_rigid_body_hydrostatics_exact_and_errors():
     m = bem.box_barge_mesh(76.2, 24.4, 5.0, panel_size=4.0)
-    body = bem.rigid_body(m, cog_z=10.0)
+    body = bem.rigid_body(m, jt.Loading.above_keel(10.0, 5.0))
     gm_t = 2.5 + 24.4**2 / (12 * 5.0) - 10.0  # KB + BM - KG = 2.42 m
     assert body.stiffness[3, 3] / (RHO_G * m.volume) == pytest.approx(gm_t, rel=1e-12)
     assert body.stiffness[4, 4] / (RHO_G * m.volume) == pytest.approx(
@@ -75,10 +75,15 @@ def test_rigid_body_hydrostatics_exact_and_errors():
         np.sqrt(np.diag(body.inertia) / body.mass), [0.35 * 24.4, 0.25 * 76.2, 0.25 * 76.2]
     )
     assert "Journee" in body.notes["radii"]
+    assert bem.rigid_body(m).stiffness[3, 3] == body.stiffness[3, 3]  # the estimate: KG 10 m
     with pytest.raises(ValueError, match="unstable in roll"):
-        bem.rigid_body(m, cog_z=16.0)
-    with pytest.raises(ValueError, match="cog_z"):
-        bem.rigid_body(m, cog_z=-1.0)
+        bem.rigid_body(m, jt.Loading.above_keel(16.0, 5.0))
+    with pytest.raises(ValueError, match="below the keel"):
+        bem.rigid_body(m, jt.Loading(z_g=-6.0))
+    with pytest.raises(ValueError, match="kg"):
+        jt.Loading.above_keel(-1.0, 5.0)
+    with pytest.raises(ValueError, match="roll_damping"):
+        jt.Loading(roll_damping=1.0)
     with pytest.raises(ValueError, match="panel_size"):
         bem.box_barge_mesh(panel_size=0.0)
 
@@ -488,6 +493,6 @@ def test_read_mesh_reads_a_user_hull_file(tmp_path):
     r = bem.read_mesh(path)
     assert r.volume == pytest.approx(m.volume, rel=1e-9)
     assert len(r.lid_faces) > 0 and r.name == "box"
-    assert bem.rigid_body(r, cog_z=10.0).stiffness[3, 3] == pytest.approx(
-        bem.rigid_body(m, cog_z=10.0).stiffness[3, 3], rel=1e-9
+    assert bem.rigid_body(r).stiffness[3, 3] == pytest.approx(
+        bem.rigid_body(m).stiffness[3, 3], rel=1e-9
     )

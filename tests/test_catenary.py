@@ -152,7 +152,7 @@ def test_time_domain_on_the_catenary_wire():
     m = jt.TowModel(vessel=jt.presets.barge_2b(), towline=cat, scales=sc)
     sim = jt.simulate(m, jt.initial_state(m, y0=0.3), t1=300.0, n_save=1501)
     met = jt.fishtail_metrics(m, sim)
-    assert bool(sim.success) and met["outcome"] == "converged" and met["slack"] == 0.0, met
+    assert bool(sim.success) and met.outcome == "converged" and met.slack == 0.0, met
     yaw = {}
     for name, line in (("catenary", cat), ("elastic", el)):
         m = jt.TowModel(vessel=jt.presets.barge_2a(), towline=line, scales=sc)
@@ -162,9 +162,9 @@ def test_time_domain_on_the_catenary_wire():
         yaw[name] = float(np.degrees(np.max(np.abs(ys[:, 5]))))
         met = jt.fishtail_metrics(m, sim)
         if name == "elastic":
-            assert bool(sim.success) and met["outcome"] == "limit_cycle", met
+            assert bool(sim.success) and met.outcome == "limit_cycle", met
         else:
-            assert met["ended_early"] and met["outcome"] != "converged", met
+            assert met.ended_early and met.outcome != "converged", met
     assert yaw["catenary"] > 75.0 > 55.0 > yaw["elastic"] > 40.0, yaw
 
 

@@ -128,9 +128,9 @@ def test_limit_cycle_matches_long_time_domain_run(barge_2b):
     y0 = _state_from_heading(jnp.asarray(0.0), m)[0].at[5].set(0.05)
     sim = jt.simulate(m, y0, t1=3000.0, n_save=30001)
     met = jt.fishtail_metrics(m, sim)
-    assert met["outcome"] == "limit_cycle"
-    assert orbit.path_width == pytest.approx(met["path_width"], rel=0.01)
-    assert orbit.period == pytest.approx(met["slewing_period"], rel=0.01)
+    assert met.outcome == "limit_cycle"
+    assert orbit.path_width == pytest.approx(met.path_width, rel=0.01)
+    assert orbit.period == pytest.approx(met.slewing_period, rel=0.01)
 
 
 def test_lyapunov_coefficient_of_the_normal_form():

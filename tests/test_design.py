@@ -46,15 +46,15 @@ def test_offset_kinematics_move_the_cog_with_its_body_velocity(model_2a):
     u, v, psi = y[:, 0], y[:, 1], y[:, 5]
     err = max(
         np.max(
-            np.abs(np.gradient(tr["cog_x"], tr["t"]) - (u * np.cos(psi) - v * np.sin(psi)))[5:-5]
+            np.abs(np.gradient(tr.cog_x, tr.t) - (u * np.cos(psi) - v * np.sin(psi)))[5:-5]
         ),
         np.max(
-            np.abs(np.gradient(tr["cog_y"], tr["t"]) - (u * np.sin(psi) + v * np.cos(psi)))[5:-5]
+            np.abs(np.gradient(tr.cog_y, tr.t) - (u * np.sin(psi) + v * np.cos(psi)))[5:-5]
         ),
     )
     wrong = jt.trajectory(jt.with_parameters(m, yp=0.0), sim)  # the same run read with yp ignored
     err_wrong = np.max(
-        np.abs(np.gradient(wrong["cog_x"], tr["t"]) - (u * np.cos(psi) - v * np.sin(psi)))[5:-5]
+        np.abs(np.gradient(wrong.cog_x, tr.t) - (u * np.cos(psi) - v * np.sin(psi)))[5:-5]
     )
     assert err < 2e-3 and err_wrong > 20 * err
 
@@ -173,4 +173,4 @@ def test_optimiser_beats_grid_with_far_fewer_evaluations_and_stabilises_2a(model
     met = jt.fishtail_metrics(
         designed, jt.simulate(designed, y_eq.at[5].add(math.radians(3.0)), t1=300.0)
     )
-    assert met["outcome"] == "converged"
+    assert met.outcome == "converged"

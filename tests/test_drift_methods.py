@@ -13,7 +13,7 @@ import jaxtow as jt
 from jaxtow._special import k1, r_function
 from jaxtow._units import RHO_SEA, G
 from jaxtow.drift import (
-    METHODS,
+    WATERLINE_METHODS,
     dnv2014,
     faltinsen,
     fujii_takahashi,
@@ -139,11 +139,11 @@ def test_wall_sided_box_head_seas_short_wave_limits(box):
     assert float(f.fy) == pytest.approx(-0.5 * RG * 76.2 * math.sin(b) ** 2, rel=1e-13)
 
 
-@pytest.mark.parametrize("name", list(METHODS))
+@pytest.mark.parametrize("name", list(WATERLINE_METHODS))
 @pytest.mark.parametrize("hull", ["box", "barge2"])
 def test_heading_symmetry(name, hull, box, barge2):
     wl = box if hull == "box" else barge2
-    fn = METHODS[name]
+    fn = WATERLINE_METHODS[name]
     w = jnp.array([0.4, 0.9, 1.7, 3.0])
     for b, u, v in [(0.25, 0.0, 0.0), (0.6, 1.2, 0.0), (1.1, 0.8, 0.4)]:
         p, m = fn(wl, w, b, u, v), fn(wl, w, -b, u, -v)
@@ -196,7 +196,7 @@ def test_vmap_over_all_four_inputs(barge2):
         for lo, hi in [(0.3, 2.5), (-1.0, 1.0), (0.0, 3.0), (-1.0, 1.0)]
     )
     for name in ("liu", "kuroda", "faltinsen"):
-        fn = METHODS[name]
+        fn = WATERLINE_METHODS[name]
         batched = jax.vmap(lambda *a: fn(barge2, *a).force)(w, b, u, v)
         loop = np.stack([np.asarray(fn(barge2, *a).force) for a in zip(w, b, u, v)])
         np.testing.assert_allclose(np.asarray(batched), loop, rtol=1e-13, atol=1e-9)
@@ -213,7 +213,7 @@ def test_vmap_over_all_four_inputs(barge2):
     ],
 )
 def test_gradients_match_finite_differences(name, barge2):
-    fn = METHODS[name]
+    fn = WATERLINE_METHODS[name]
     x0 = dict(w=1.1, b=0.3, u=1.4, v=0.35)
 
     def f(**kw):
@@ -332,7 +332,7 @@ def test_cli_drift_writes_figures_datasets_and_summary(tmp_path):
     ):
         assert_png_has_content(tmp_path / f)
     ds = load_dataset(tmp_path / "stationary_head_seas.nc")
-    assert set(ds.method.values) == set(METHODS) and ds["valid"].dtype == bool
+    assert set(ds.method.values) == set(WATERLINE_METHODS) and ds["valid"].dtype == bool
     s = json.loads((tmp_path / "summary.json").read_text())
     assert s["waterline"] == "barge2" and s["physical_tp_range"][0] == pytest.approx(8.06, abs=0.01)
     assert s["regular_relative_mse_by_zone"]["surge"]["fujii_takahashi"]["reflection"] < 0.05

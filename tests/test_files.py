@@ -512,14 +512,15 @@ def test_drift_source_takes_a_file_with_its_options(tmp_path):
     from jaxtow.presets import drift_source
 
     f = _write(tmp_path, _records(heads=(0.0, 45.0, 90.0, 135.0, 180.0)))
-    q, desc = drift_source(
+    src = drift_source(
         {"file": str(f), "ulen": 2.0, "rho": 1000.0, "g": 10.0, "reference_point": [1.5, 0.0]}
     )
+    q, desc = src.qtf(), src.describe()
     assert (
         "ulen = 2 (given)" in desc and "rho = 1000 (given)" in desc and "(1.5, 0) m given" in desc
     )
     assert "completed by port-starboard symmetry" in desc and q.periodic
-    q0, desc0 = drift_source(str(f))
+    q0, desc0 = drift_source(str(f)).qtf(), drift_source(str(f)).describe()
     assert "ASSUMED" in desc0
     np.testing.assert_allclose(
         np.asarray(q.values[0]),
@@ -532,7 +533,7 @@ def test_drift_source_takes_a_file_with_its_options(tmp_path):
     m = jt.presets.barge2_wave_model("2a", qtf={"file": str(f), "ulen": 2.0})
     np.testing.assert_allclose(
         np.asarray(m.external.qtf.values),
-        np.asarray(drift_source({"file": str(f), "ulen": 2.0})[0].values),
+        np.asarray(drift_source({"file": str(f), "ulen": 2.0}).qtf().values),
     )
 
 

@@ -17,16 +17,16 @@ def test_clarke_regressions_by_hand_on_barge2():
     L, B, T, cb = 76.2, 24.4, 5.0, 0.928
     S = math.pi * (T / L) ** 2
     d = P.clarke_linear_derivatives(L, B, T, cb)
-    assert d["Yv"] == pytest.approx(-S * (1 + 0.40 * 0.928 * 4.88) * 15.24, rel=1e-12)
-    assert d["Yr"] == pytest.approx(
+    assert d.Yv == pytest.approx(-S * (1 + 0.40 * 0.928 * 4.88) * 15.24, rel=1e-12)
+    assert d.Yr == pytest.approx(
         -S * (-0.5 + 2.2 * 24.4 / 76.2 - 0.08 * 4.88) * 15.24, rel=1e-12
     )
-    assert d["Nv"] == pytest.approx(-S * (0.5 + 2.4 * 5 / 76.2) * 15.24, rel=1e-12)
-    assert d["Nr"] == pytest.approx(
+    assert d.Nv == pytest.approx(-S * (0.5 + 2.4 * 5 / 76.2) * 15.24, rel=1e-12)
+    assert d.Nr == pytest.approx(
         -S * (0.25 + 0.039 * 4.88 - 0.56 * 24.4 / 76.2) * 15.24, rel=1e-12
     )
-    assert d["lb_in_range"]
-    assert not P.clarke_linear_derivatives(200.0, 10.0, 5.0, 0.7)["lb_in_range"]
+    assert d.lb_in_range
+    assert not P.clarke_linear_derivatives(200.0, 10.0, 5.0, 0.7).lb_in_range
 
 
 @pytest.mark.slow
@@ -54,12 +54,12 @@ block_coefficient = {cb!r}
 [towline]
 l0 = 2.5
 xp = 0.5
-EA = 2.6e8
+EA_N = 2.6e8
 """,
             source="particulars",
         )
         for k in ("Yv", "Yr", "Nv", "Nr"):
-            assert float(getattr(tow.vessel, k)) == pytest.approx(d[k], rel=1e-12)
+            assert float(getattr(tow.vessel, k)) == pytest.approx(getattr(d, k), rel=1e-12)
             assert "Clarke" in dict(tow.assumed)[k]
         c = float(tow.vessel.stability_coefficient())
         st = jt.stability(tow.model(), jt.equilibria(tow.model()).state)
@@ -76,10 +76,10 @@ def test_kijima_regressions_by_hand_on_barge2():
     L, B, T, cb = 76.2, 24.4, 5.0, 0.928
     k = 2 * T / L
     d = P.kijima_linear_derivatives(L, B, T, cb, a11=0.03)
-    assert d["Yv"] == pytest.approx(-(math.pi * k / 2 + 1.4 * cb * B / L), rel=1e-12)
-    assert d["Yr"] == pytest.approx(math.pi * k / 4 + 0.03, rel=1e-12)
-    assert d["Nv"] == pytest.approx(-k, rel=1e-12)
-    assert d["Nr"] == pytest.approx(-0.54 * k + k * k, rel=1e-12)
+    assert d.Yv == pytest.approx(-(math.pi * k / 2 + 1.4 * cb * B / L), rel=1e-12)
+    assert d.Yr == pytest.approx(math.pi * k / 4 + 0.03, rel=1e-12)
+    assert d.Nv == pytest.approx(-k, rel=1e-12)
+    assert d.Nr == pytest.approx(-0.54 * k + k * k, rel=1e-12)
 
 
 def test_particulars_estimate_every_parameter():
@@ -111,7 +111,7 @@ regression = "{regression}"
 [towline]
 l0 = 2.5
 xp = 0.5
-EA = 2.6e8
+EA_N = 2.6e8
 """,
         source="particulars",
     )

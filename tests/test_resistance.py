@@ -98,7 +98,7 @@ def test_budget_sums_and_trends(tow):
     assert np.all(
         np.diff(waves, axis=0) > 0
     )  # wave drift rises with speed in absolute terms (thesis 7.2)
-    current = r[:, 1, R.COMPONENTS.index("current")]
+    current = r[:, 1, R.COMPONENTS.index("hull")]
     np.testing.assert_allclose(current, current[-1] * (np.asarray(speeds) / 3.5) ** 2, rtol=1e-12)
     # body loads: along-course resistance of a head-on budget is −Fx
     np.testing.assert_allclose(r[..., :3], -np.asarray(b.body)[..., :3, 0], rtol=1e-14)

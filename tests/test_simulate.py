@@ -17,21 +17,21 @@ def test_thesis_initial_condition_2b_converges_2a_fishtails(barge_2a, barge_2b):
     m = model(barge_2b)
     sim = simulate(m, initial_state(m, psi0=0.0, y0=0.3), t1=400.0)
     met = fishtail_metrics(m, sim)
-    assert bool(sim.success) and met["outcome"] == "converged"
+    assert bool(sim.success) and met.outcome == "converged"
     eqs = jt.equilibria(m)
-    assert int(eqs.branch[met["equilibrium"]]) == 0  # straight behind the tug
-    assert met["damping"]["zeta"] is not None and 0 < met["damping"]["zeta"] < 1
+    assert int(eqs.branch[met.equilibrium]) == 0  # straight behind the tug
+    assert met.damping.zeta is not None and 0 < met.damping.zeta < 1
 
     m = model(barge_2a)
     sim = simulate(m, initial_state(m, psi0=0.0, y0=0.3), t1=400.0)
     met = fishtail_metrics(m, sim)
-    assert bool(sim.success) and met["outcome"] == "limit_cycle"
+    assert bool(sim.success) and met.outcome == "limit_cycle"
     # thesis: path width 2.1 L and yaw between ±50°; measured here 2.40 L and ±49.3° with
     # the estimated added masses and EA' (see jaxtow.presets)
-    assert met["path_width"] == pytest.approx(2.1, rel=0.25)
-    assert -met["yaw_range"][0] == pytest.approx(50.0, rel=0.1)
-    assert met["yaw_range"][1] == pytest.approx(50.0, rel=0.1)
-    assert met["slewing_period"] > 0
+    assert met.path_width == pytest.approx(2.1, rel=0.25)
+    assert -met.yaw_range[0] == pytest.approx(50.0, rel=0.1)
+    assert met.yaw_range[1] == pytest.approx(50.0, rel=0.1)
+    assert met.slewing_period > 0
 
 
 def test_models_differing_only_in_metadata_share_the_compiled_run(barge_2a, barge_2b):
@@ -165,16 +165,16 @@ def test_damping_ratio_of_linear_oscillator(zeta):
         np.cos(wd * t) + zeta / math.sqrt(1 - zeta**2) * np.sin(wd * t)
     )
     d = damping_ratio(t, x, x_final=2.0)
-    assert d["method"] == "log_decrement"
-    assert d["zeta"] == pytest.approx(zeta, rel=0.01)
+    assert d.method == "log_decrement"
+    assert d.zeta == pytest.approx(zeta, rel=0.01)
     # only the first overshoot in the record: the overshoot method is used
     short = t <= 1.5 * math.pi / wd
     d = damping_ratio(t[short], x[short], x_final=2.0)
-    assert d["method"] == "overshoot"
-    assert d["zeta"] == pytest.approx(zeta, rel=0.01)
+    assert d.method == "overshoot"
+    assert d.zeta == pytest.approx(zeta, rel=0.01)
     # no oscillation: no ratio, said so
     d = damping_ratio(t, 2.0 + np.exp(-t), x_final=2.0)
-    assert d["zeta"] is None and d["method"] == "no_oscillation"
+    assert d.zeta is None and d.method == "no_oscillation"
 
 
 def test_run_that_ends_early_is_flagged(barge_2a):
@@ -182,11 +182,11 @@ def test_run_that_ends_early_is_flagged(barge_2a):
     sim = simulate(m, initial_state(m, y0=0.3), t1=400.0, max_steps=100)
     assert not bool(sim.success)
     met = fishtail_metrics(m, sim)
-    assert met["ended_early"] and met["t_end"] < 400.0
-    for k in ("path_width", "slewing_period"):
-        assert met[k] is None or np.isfinite(met[k])
+    assert met.ended_early and met.t_end < 400.0
+    for v in (met.path_width, met.slewing_period):
+        assert v is None or np.isfinite(v)
     tr = trajectory(m, sim)
-    assert np.all(np.isfinite(tr["sway_offset"]))
+    assert np.all(np.isfinite(tr.sway_offset))
 
 
 def test_slack_towline_run_is_flagged(barge_2b):
@@ -196,20 +196,20 @@ def test_slack_towline_run_is_flagged(barge_2b):
     y0[0] = 1.2  # overtaking the tug's speed: the line stays slack for a while
     sim = simulate(m, y0, t1=60.0)
     met = fishtail_metrics(m, sim)
-    assert met["slack"] > 0
+    assert met.slack > 0
     fh = force_history(m, sim)
-    assert np.all(np.isfinite(fh["tension"])) and np.any(fh["tension"] == 0)
+    assert np.all(np.isfinite(fh.forces.tension)) and np.any(fh.forces.tension == 0)
 
 
 def test_trajectory_geometry_and_forces(barge_2a):
     m = model(barge_2a)
     sim = simulate(m, initial_state(m, y0=0.3), t1=30.0, n_save=301)
     tr = trajectory(m, sim)
-    np.testing.assert_allclose(tr["sway_offset"], tr["cog_y"], atol=1e-12)
+    np.testing.assert_allclose(tr.sway_offset, tr.cog_y, atol=1e-12)
     fh = force_history(m, sim)
     dy = np.asarray(jt.vector_field(0.0, jnp.asarray(sim.ys[10]), m))
-    tot = sum(fh[k][10] for k in ("manoeuvring", "towline", "coupling", "external"))
-    np.testing.assert_allclose(tot / fh["inertia"][10], dy[:3], rtol=1e-12)
+    tot = sum(getattr(fh.forces, k)[10] for k in ("manoeuvring", "towline", "coupling", "external"))
+    np.testing.assert_allclose(tot / fh.forces.inertia[10], dy[:3], rtol=1e-12)
 
 
 def test_batch_equals_single_runs_and_modes_agree(barge_2b):

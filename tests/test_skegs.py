@@ -40,15 +40,15 @@ def test_skeg_increments_by_hand():
     cla = 2 * math.pi * lam / (2 + math.sqrt(lam**2 + 4))
     k = 2 * 24.0 * cla / (L * T)
     xi = (-L / 2 + 4.0) / L
-    assert d["aspect_ratio"] == pytest.approx(lam) and d["lift_slope"] == pytest.approx(cla)
-    assert d["Yv"] == pytest.approx(-k, rel=1e-12)
-    assert d["Yr"] == pytest.approx(-k * xi, rel=1e-12) and d["Nv"] == d["Yr"]
-    assert d["Nr"] == pytest.approx(-k * xi * xi, rel=1e-12)
+    assert d.aspect_ratio == pytest.approx(lam) and d.lift_slope == pytest.approx(cla)
+    assert d.Yv == pytest.approx(-k, rel=1e-12)
+    assert d.Yr == pytest.approx(-k * xi, rel=1e-12) and d.Nv == d.Yr
+    assert d.Nr == pytest.approx(-k * xi * xi, rel=1e-12)
     # a stern skeg adds sway and yaw damping and a stabilising (positive) N_v' increment
-    assert d["Yv"] < 0 and d["Nv"] > 0 and d["Nr"] < 0
+    assert d.Yv < 0 and d.Nv > 0 and d.Nr < 0
     # a triangle of the same span and chord: half the area, twice the aspect ratio
     tri = P.skeg_derivatives(L, T, P.Skegs(2, 3.0, 8.0, area=12.0))
-    assert tri["aspect_ratio"] == pytest.approx(1.5)
+    assert tri.aspect_ratio == pytest.approx(1.5)
 
 
 @pytest.mark.parametrize(
@@ -78,17 +78,17 @@ def test_barge2_skegs_one_fitted_span_predicts_the_other_three_increments():
     under a raked stern must be); the other three increments are then predictions, each with
     the measured sign and within 25 % (docs/estimates.md)."""
     span = brentq(
-        lambda s: P.skeg_derivatives(L, T, P.Skegs(2, s, 8.0))["Yv"] - MEASURED["Yv"], 0.5, 20
+        lambda s: P.skeg_derivatives(L, T, P.Skegs(2, s, 8.0)).Yv - MEASURED["Yv"], 0.5, 20
     )
     assert span == pytest.approx(3.559, abs=1e-3) and span < T
     d = P.skeg_derivatives(L, T, P.Skegs(2, span, 8.0))
-    err = {k: d[k] / MEASURED[k] - 1 for k in ("Yr", "Nv", "Nr")}
+    err = {k: getattr(d, k) / MEASURED[k] - 1 for k in ("Yr", "Nv", "Nr")}
     assert err["Yr"] == pytest.approx(0.250, abs=2e-3)
     assert err["Nv"] == pytest.approx(-0.164, abs=2e-3)
     assert err["Nr"] == pytest.approx(0.095, abs=2e-3)
     # Barge 2a's measured derivatives plus these skegs: course stable, like 2b
     a = P.barge_2a()
-    vals = {k: float(getattr(a, k)) + d[k] for k in MEASURED}
+    vals = {k: float(getattr(a, k)) + getattr(d, k) for k in MEASURED}
     assert _c(vals, float(a.m)) == pytest.approx(0.0232, abs=5e-4)
     assert float(P.barge_2b().stability_coefficient()) == pytest.approx(0.0286, abs=1e-4)
 
@@ -100,7 +100,7 @@ def test_barge2_skegs_filling_the_stern_rake_unfitted():
     out the hull's wake and flow straightening at the stern."""
     sk = P.Skegs(2, T, RAKE, area=0.5 * T * RAKE, x=-L / 2 + RAKE / 3)
     d = P.skeg_derivatives(L, T, sk)
-    err = {k: d[k] / MEASURED[k] - 1 for k in MEASURED}
+    err = {k: getattr(d, k) / MEASURED[k] - 1 for k in MEASURED}
     assert err["Yv"] == pytest.approx(0.343, abs=2e-3)
     assert err["Nv"] == pytest.approx(0.194, abs=2e-3)
     assert err["Yr"] == pytest.approx(0.786, abs=2e-3)
@@ -122,7 +122,7 @@ regression = "clarke"
 [towline]
 l0 = 2.5
 xp = 0.5
-EA = 2.6e8
+EA_N = 2.6e8
 """
 
 

@@ -10,6 +10,7 @@ import jax.numpy as jnp
 import numpy as np
 import pytest
 
+import jaxtow as jt
 import jaxtow.strip as S
 
 ROOT = Path(__file__).parents[1]
@@ -74,7 +75,7 @@ def test_offsets_file_reads_a_box(tmp_path):
     lines = ["# a box barge, half-breadths at the waterline heights", "x,0,-2.5,-5"]
     lines += [f"{x},12.2,12.2,12.2" for x in xs]
     path.write_text("\n".join(lines) + "\n")
-    hull = S.offsets_file(path, n_points=10)
+    hull = jt.io.read_offsets(path, n_points=10)
     assert hull.name == "box" and hull.y.shape == (22, 10)
     assert float(jnp.sum(hull.dx)) == pytest.approx(76.2)
     assert np.allclose(np.asarray(hull.x), xs)
@@ -100,14 +101,14 @@ def _assert_box_sections(hull, half, draft):
         ("x,-0.5,-1\n0,1,1\n1,1,1\n", "include 0"),
         ("x,0,-1\n0,1\n1,1,1\n", "half-breadths"),
         ("x,0,-1\n1,1,1\n0,1,1\n", "increase"),
-        ("x,0,-1\n0,1,a\n1,1,1\n", "not a table of numbers"),
+        ("x,0,-1\n0,1,a\n1,1,1\n", "row 2 of the table is not all numbers"),
     ],
 )
 def test_bad_offsets_files_are_named(tmp_path, text, match):
     path = tmp_path / "bad.csv"
     path.write_text(text)
     with pytest.raises(ValueError, match=match) as e:
-        S.offsets_file(path)
+        jt.io.read_offsets(path)
     assert "bad.csv" in str(e.value)
 
 
@@ -137,7 +138,7 @@ def test_committed_panel_comparison_matches_the_strip_side():
         assert float(c.added_mass[i, k, k]) == pytest.approx(r["strip_a"], rel=1e-8)
         assert float(c.damping[i, k, k]) == pytest.approx(r["strip_b"], rel=1e-8)
     om = np.array([r["omega"] for r in data["head_sea_raos"]])
-    raos = np.asarray(S.motions(hull, om, [0.0], z_g=data["z_g"]).rao)[:, 0][:, [1, 3]]
+    raos = np.asarray(S.motions(hull, om, [0.0], loading=jt.Loading(z_g=data["z_g"])).rao)[:, 0][:, [1, 3]]
     for i, r in enumerate(data["head_sea_raos"]):
         assert abs(raos[i, 0]) == pytest.approx(r["strip_heave"], rel=1e-8)
         assert abs(raos[i, 1]) == pytest.approx(r["strip_pitch"], rel=1e-8)
@@ -152,14 +153,14 @@ def test_strip_wave_force_at_beam_seas_is_the_direct_diffraction_force():
     """The Haskind form of strip theory (Froude-Krylov plus the radiation potentials) at
     sin χ = 1 is the 2-D beam-sea problem, which the section solve also answers directly by
     its diffraction potential: the two agree within the panels' error (0.3 %)."""
-    from jaxtow.strip._hull import _section_wave_forces
+    from jaxtow.strip._strips import section_wave_forces
 
     ys = np.r_[np.full(13, 1.0), np.linspace(1.0, 0.0, 13)[1:]]
     zs = np.r_[np.linspace(0.0, -1.0, 13), np.full(12, -1.0)]
     om = jnp.array([1.0, 2.0, 3.0])
     c = S.section_coefficients(ys, zs, om)
-    fk, dif = _section_wave_forces(
-        jnp.asarray(ys), jnp.asarray(zs), c.potentials, om, jnp.ones(3), 1025.0, 9.80665
+    fk, dif = section_wave_forces(
+        jnp.asarray(ys), jnp.asarray(zs), c.potentials, om, jnp.ones(3), jt.SEA_WATER
     )
     x = np.asarray(fk + dif)
     ref = np.asarray(c.exciting)
@@ -172,13 +173,13 @@ def test_box_hydrostatics_and_long_wave_raos():
     and pitch RAO → k (the wave slope), to 0.1 % at ω = 0.1 rad/s."""
     hull = S.box(76.2, 24.4, 5.0, n_stations=11)
     hs = S.hydrostatics(hull)
-    assert float(hs["volume"]) == pytest.approx(76.2 * 24.4 * 5.0)
-    assert float(hs["z_b"]) == pytest.approx(-2.5)
-    assert float(hs["c33"]) == pytest.approx(1025.0 * 9.80665 * 76.2 * 24.4)
+    assert float(hs.volume) == pytest.approx(76.2 * 24.4 * 5.0)
+    assert float(hs.z_b) == pytest.approx(-2.5)
+    assert float(hs.area) == pytest.approx(76.2 * 24.4)
     om = np.array([0.1, 0.15])
     # with G at B the strips' pitch restoring is the waterplane's alone, as their exciting
     # moment (strip theory has no surge force to lever)
-    m = S.motions(hull, om, np.array([0.0, np.pi / 2]), z_g=-2.5)
+    m = S.motions(hull, om, np.array([0.0, np.pi / 2]), loading=jt.Loading(z_g=-2.5))
     r = np.asarray(m.rao)
     k = om**2 / 9.80665
     assert np.allclose(np.abs(r[:, 0, 1]), 1.0, rtol=2e-3)
@@ -229,13 +230,13 @@ def test_mesh_hull_cuts_the_panel_meshes_into_the_strip_hulls():
     box = mesh_hull(box_barge_mesh(76.2, 24.4, 5.0, panel_size=2.0))
     assert box.transom and box.y.shape == (21, 12)
     _assert_box_sections(box, 12.2, 5.0)
-    assert float(S.hydrostatics(box)["volume"]) == pytest.approx(76.2 * 24.4 * 5.0, rel=1e-9)
+    assert float(S.hydrostatics(box).volume) == pytest.approx(76.2 * 24.4 * 5.0, rel=1e-9)
     raked, ref = mesh_hull(barge2_mesh(5.0)), presets.barge2_hull(5.0)
     assert not raked.transom
     assert np.allclose(np.asarray(raked.x), np.asarray(ref.x))
     assert np.allclose(np.asarray(raked.z)[:, -1], np.asarray(ref.z)[:, -1], rtol=1e-6)
-    assert float(S.hydrostatics(raked)["volume"]) == pytest.approx(
-        float(S.hydrostatics(ref)["volume"]), rel=1e-9
+    assert float(S.hydrostatics(raked).volume) == pytest.approx(
+        float(S.hydrostatics(ref).volume), rel=1e-9
     )
     with pytest.raises(ValueError, match="n_stations"):
         mesh_hull(box_barge_mesh(76.2, 24.4, 5.0), n_stations=1)
@@ -250,6 +251,6 @@ def test_mesh_and_offsets_file_give_the_same_sections(tmp_path):
     path = tmp_path / "box.csv"
     rows = ["x,0,-2.5,-5"] + [f"{x},12.2,12.2,12.2" for x in np.asarray(mesh.x)]
     path.write_text("\n".join(rows) + "\n")
-    table = S.offsets_file(path)
+    table = jt.io.read_offsets(path)
     assert np.allclose(np.asarray(mesh.y), np.asarray(table.y), atol=1e-9)
     assert np.allclose(np.asarray(mesh.z), np.asarray(table.z), atol=1e-9)

@@ -87,15 +87,21 @@ def test_shipped_barge2_is_the_finest_mesh_of_the_documented_study():
 
 
 def test_drift_source_names_every_source_and_rejects_the_rest(tmp_path):
-    q, d = drift_source(None)
+    src = drift_source(None)
+    q, d = src.qtf(), src.describe()
     assert q is database("barge2", "near_field") and "near-field" in d and "barge2" in d
-    assert drift_source("far_field")[0] is database("barge2", "far_field")
-    assert drift_source("barge1:near_field")[0] is database("barge1", "near_field")
-    assert "APPROXIMATE" in drift_source("standin")[1]
-    assert drift_source(q) == (q, "user QTF")
+    assert isinstance(src, jt.presets.DatabaseSource) and src.qtf() is src.qtf()  # computed once
+    assert drift_source("far_field").qtf() is database("barge2", "far_field")
+    assert drift_source("barge1:near_field").qtf() is database("barge1", "near_field")
+    assert "APPROXIMATE" in drift_source("standin").describe()
+    given = drift_source(q)
+    assert given.qtf() is q and given.describe() == "user QTF"
+    assert drift_source(given) is given
+    wl = drift_source("kashiwagi")
+    assert isinstance(wl, jt.presets.WaterlineSource) and "kashiwagi" in wl.describe()
     path = tmp_path / "q.nc"
     jt.io.save_qtf(q, path)
-    assert drift_source(str(path))[1] == f"QTF file {path} (jaxtow NetCDF)"
+    assert drift_source(str(path)).describe() == f"QTF file {path} (jaxtow NetCDF)"
     with pytest.raises(ValueError, match="drift source 'nonsense'"):
         drift_source("nonsense")
     with pytest.raises(ValueError, match="parameter 'name'"):

@@ -31,24 +31,30 @@ def _summary(folder: Path, stem: str) -> dict:
 
 def test_failure_in_a_step_writes_the_report_marked_incomplete(tmp_path, monkeypatch, capsys):
     """The first step of Barge 1's study (its drift) forced to fail: the report and the JSON
-    name the step and the error, the command exits 1 and keeps its step folder."""
+    name the step and the error under names of their own (a complete report of an earlier
+    run in the folder stays as it was), the command exits 1 and keeps its step folder; a
+    second study in the same folder keeps its own run manifest."""
+    (tmp_path / "barge1_report.html").write_text("the complete report of an earlier run")
 
     def fail(self):
         raise RuntimeError("forced failure")
 
-    monkeypatch.setattr(jt.tow.Tow, "drift", fail)
+    monkeypatch.setattr(jt.presets.AbstractDriftSource, "qtf", fail)
     with pytest.raises(SystemExit) as info:
         main(["study", "barge1", "--out", str(tmp_path), "--quiet"])
     assert info.value.code == 1
-    s = json.loads((tmp_path / "barge1_summary.json").read_text())
+    s = json.loads((tmp_path / "barge1_INCOMPLETE_summary.json").read_text())
     assert s["incomplete"] == dict(
         step="wave drift of the hull", error="RuntimeError: forced failure", interrupted=False
     )
-    text = (tmp_path / "barge1_report.html").read_text()
+    text = (tmp_path / "barge1_INCOMPLETE_report.html").read_text()
     assert "Tow study: barge1 (INCOMPLETE)" in text
     assert "RuntimeError: forced failure" in text and "--resume" in text
+    assert (tmp_path / "barge1_report.html").read_text() == "the complete report of an earlier run"
     assert "--resume to continue" in capsys.readouterr().err
     assert (tmp_path / ".barge1_steps" / "manifest.json").exists()
+    assert json.loads((tmp_path / "barge1_run.json").read_text())["status"] == "failed"
+    assert not (tmp_path / "jaxtow_run.json").exists()
     assert not list(tmp_path.glob("*.lock"))
 
 
@@ -116,9 +122,9 @@ def test_killed_study_resumes_to_the_uninterrupted_results(tmp_path):
         p = _kill_after([str(tow), "--out", str(out), *SMALL], step, sig)
         if sig == signal.SIGINT:  # Ctrl-C: the report of what finished, marked incomplete
             assert p.returncode == 130
-            s = json.loads((out / f"{stem}_summary.json").read_text())
+            s = json.loads((out / f"{stem}_INCOMPLETE_summary.json").read_text())
             assert s["incomplete"]["interrupted"] is True
-            assert "(INCOMPLETE)" in (out / f"{stem}_report.html").read_text()
+            assert "(INCOMPLETE)" in (out / f"{stem}_INCOMPLETE_report.html").read_text()
         else:
             assert p.returncode == -signal.SIGKILL
         kept = list((out / f".{stem}_steps").glob("*.pickle"))
@@ -128,6 +134,7 @@ def test_killed_study_resumes_to_the_uninterrupted_results(tmp_path):
         assert p.returncode == 0, err
         assert err.count(": resumed") == len(kept)
         assert _summary(out, stem) == reference
+        assert not list(out.glob(f"{stem}_INCOMPLETE_*"))  # the complete run removes them
         xr.testing.assert_identical(xr.load_dataset(out / f"{stem}_map_xp_l0.nc"), ref_map)
         assert not (out / f".{stem}_steps").exists()
         assert not list(out.glob("*.lock"))
@@ -141,11 +148,11 @@ def test_failure_in_the_last_step_keeps_every_earlier_result(tmp_path, monkeypat
     monkeypatch.setattr("jaxtow.studies._assessment.simulate", fail)
     with pytest.raises(SystemExit):
         main(["study", "barge2a", "--out", str(tmp_path), "--quiet", *SMALL])
-    s = json.loads((tmp_path / "barge2a_summary.json").read_text())
+    s = json.loads((tmp_path / "barge2a_INCOMPLETE_summary.json").read_text())
     assert s["incomplete"]["step"] == "time-domain check from a disturbed start"
-    assert {"calm", "sea_states", "resistance", "map"} <= set(s)
-    assert "time_domain" not in s
-    text = (tmp_path / "barge2a_report.html").read_text()
+    assert {"conditions", "resistance", "map"} <= set(s) and len(s["conditions"]) >= 3
+    assert s["time_domain"] is None
+    text = (tmp_path / "barge2a_INCOMPLETE_report.html").read_text()
     assert "(INCOMPLETE)" in text and "forced failure in the time domain" in text
     assert np.isfinite(s["map"]["straight_stable_share"])
 
@@ -153,7 +160,7 @@ def test_failure_in_the_last_step_keeps_every_earlier_result(tmp_path, monkeypat
 def test_a_swallowed_ctrl_c_still_stops_the_study_at_the_next_step():
     """A Ctrl-C whose KeyboardInterrupt is swallowed on its way (a finaliser, a callback that
     ignores exceptions) is remembered: the study's next step boundary stops it."""
-    from jaxtow._interrupt import sticky
+    from jaxtow._interrupt import sticky_interrupts as sticky
     from jaxtow.studies._assessment import Steps
 
     def swallow():
@@ -175,9 +182,9 @@ def test_a_swallowed_ctrl_c_still_stops_the_study_at_the_next_step():
 
 
 def test_a_ctrl_c_outside_the_command_line_does_not_stop_a_later_study():
-    """Outside `sticky` (a notebook, a script) an interrupt recorded by a held write is not
+    """Outside `sticky_interrupts` (a notebook, a script) an interrupt recorded by a held write is not
     remembered, and when `sticky` ends its record goes with it: a later study runs."""
-    from jaxtow._interrupt import request, requested, sticky
+    from jaxtow._interrupt import request, requested, sticky_interrupts as sticky
     from jaxtow.studies._assessment import Steps
 
     request()

@@ -77,10 +77,14 @@ def test_parameter_paths_into_the_force_model(qtf):
 
 
 def test_nearest_straight_reduction():
+    """The straight-behind equilibrium is the found one nearest ψ = 0 within
+    `jaxtow.STRAIGHT_LIMIT` (1°): none where every found one is further off (a sheer)."""
     arrays = dict(
-        valid=np.array([[True, True, False], [False, False, False]]),
-        psi=np.array([[-0.3, 0.1, 0.0], [0.0, 0.0, 0.0]]),
-        max_real=np.array([[1.0, -2.0, 5.0], [1.0, 1.0, 1.0]]),
+        valid=np.array([[True, True, False], [False, False, False], [True, True, False]]),
+        psi=np.array([[-0.3, 0.01, 0.0], [0.0, 0.0, 0.0], [-0.3, 0.1, 0.0]]),
+        max_real=np.array([[1.0, -2.0, 5.0], [1.0, 1.0, 1.0], [1.0, -2.0, 5.0]]),
     )
     out = nearest_straight(arrays)
-    assert out[0] == -2.0 and np.isnan(out[1])
+    assert out[0] == -2.0 and np.isnan(out[1]) and np.isnan(out[2])
+    mask = jt.straight_behind(arrays["psi"], arrays["valid"])
+    assert mask.tolist() == [[False, True, False], [False] * 3, [False] * 3]

@@ -23,72 +23,48 @@ ImportError that says how to install it; the rest of jaxtow never imports it.
 This is a NumPy pre-processor: it produces tables; the differentiable JAX models consume them.
 """
 
-from . import (
-    body as body,
-    capytaine_mesh as capytaine_mesh,
-    convergence as convergence,
-    database as database,
-    offsets as offsets,
-    reference as reference,
-    solve as solve,
-    summary as summary,
-)
-from .body import RigidBody as RigidBody, rigid_body as rigid_body
-from .capytaine_mesh import (
-    INSTALL_HINT as INSTALL_HINT,
-    read_mesh as read_mesh,
-    require_capytaine as require_capytaine,
-    symmetric_capytaine_mesh as symmetric_capytaine_mesh,
-)
-from .convergence import mesh_convergence as mesh_convergence
-from .database import (
-    BEMDrift as BEMDrift,
-    bem_drift as bem_drift,
-    box_barge_drift as box_barge_drift,
-    qtf_attrs as qtf_attrs,
-    qtf_from_bem as qtf_from_bem,
-    rao as rao,
-)
-from .meshes import (
-    HullMesh as HullMesh,
-    barge2_mesh as barge2_mesh,
-    box_barge_mesh as box_barge_mesh,
-    raked_barge_mesh as raked_barge_mesh,
-    vertical_cylinder_mesh as vertical_cylinder_mesh,
-)
-from .offsets import mesh_hull as mesh_hull
-from .solve import far_field_drift as far_field_drift, solve_frequency as solve_frequency
+from typing import TYPE_CHECKING
+
+from .._lazy import attach as _attach
+
+if TYPE_CHECKING:
+    from . import (
+        body as body,
+        capytaine_mesh as capytaine_mesh,
+        convergence as convergence,
+        database as database,
+        offsets as offsets,
+        reference as reference,
+        solve as solve,
+        summary as summary,
+    )
+    from .body import RigidBody as RigidBody, rigid_body as rigid_body
+    from .capytaine_mesh import (
+        INSTALL_HINT as INSTALL_HINT,
+        available as available,
+        read_mesh as read_mesh,
+        require_capytaine as require_capytaine,
+        symmetric_capytaine_mesh as symmetric_capytaine_mesh,
+    )
+    from .convergence import mesh_convergence as mesh_convergence
+    from .database import (
+        BEMDrift as BEMDrift,
+        bem_drift as bem_drift,
+        box_barge_drift as box_barge_drift,
+        qtf_attrs as qtf_attrs,
+        qtf_from_bem as qtf_from_bem,
+        rao as rao,
+    )
+    from .meshes import (
+        HullMesh as HullMesh,
+        barge2_mesh as barge2_mesh,
+        box_barge_mesh as box_barge_mesh,
+        raked_barge_mesh as raked_barge_mesh,
+        vertical_cylinder_mesh as vertical_cylinder_mesh,
+    )
+    from .offsets import mesh_hull as mesh_hull
+    from .solve import far_field_drift as far_field_drift, solve_frequency as solve_frequency
+    from .source import MeshDriftSource as MeshDriftSource
 
 
-def available() -> bool:
-    """True when Capytaine can be imported."""
-    try:
-        require_capytaine()
-    except ImportError:
-        return False
-    return True
-
-
-__all__ = [
-    "HullMesh",
-    "barge2_mesh",
-    "box_barge_mesh",
-    "raked_barge_mesh",
-    "vertical_cylinder_mesh",
-    "INSTALL_HINT",
-    "BEMDrift",
-    "RigidBody",
-    "bem_drift",
-    "box_barge_drift",
-    "mesh_convergence",
-    "qtf_attrs",
-    "qtf_from_bem",
-    "rao",
-    "read_mesh",
-    "require_capytaine",
-    "rigid_body",
-    "solve_frequency",
-    "symmetric_capytaine_mesh",
-    "far_field_drift",
-    "mesh_hull",
-]
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

@@ -1,16 +1,16 @@
-"""The rigid body of a panel solve: mass, CoG (its height above the keel, thesis Table B.3),
-radii of gyration (Journée's approximations, `jaxtow.presets.ASSUMPTIONS`) and the exact
-hydrostatics of the hull; the roll damping of the documented estimate."""
+"""The rigid body of a panel solve: the mass and hydrostatics of the hull in a loading
+condition (`jaxtow.Loading`: the CoG, the radii of gyration and the roll damping, with the
+documented estimates for what is not given)."""
 
 from __future__ import annotations
 
 import dataclasses
-import math
 
 import numpy as np
 
-from .. import presets
-from .._units import RHO_SEA, G
+from .._body import Loading, hydrostatic_restoring, mass_matrix, roll_damping_coefficient
+from .._rules import check_type
+from .._units import RHO_SEA, G, Water
 from .meshes import HullMesh
 
 
@@ -31,58 +31,46 @@ class RigidBody:
     notes: dict
 
     def mass_matrix(self) -> np.ndarray:
-        M = np.zeros((6, 6))
-        M[:3, :3] = self.mass * np.eye(3)
-        M[3:, 3:] = self.inertia
-        return M
+        """(6, 6) about the CoG (`jaxtow.mass_matrix`)."""
+        radii = np.sqrt(np.diag(self.inertia) / self.mass) if self.mass > 0 else np.zeros(3)
+        return np.asarray(mass_matrix(self.mass, np.zeros(3), radii))
 
 
 def rigid_body(
-    mesh: HullMesh,
-    cog_z: float | None = None,
-    *,
-    radii=None,
-    roll_damping: float | None = None,
-    rho: float = RHO_SEA,
-    g: float = G,
+    mesh: HullMesh, loading: Loading | None = None, *, rho: float = RHO_SEA, g: float = G
 ) -> RigidBody:
-    """Free-floating rigid body for ``mesh``: mass ρ∇, CoG above the centre of buoyancy at
-    height ``cog_z`` above the keel (thesis Table B.3: 10 m; default
-    `presets.ASSUMPTIONS['cog_z']`), radii of gyration ``radii`` = (k_xx, k_yy, k_zz) [m]
-    (default: Journée's approximations, `presets.radii_of_gyration`), exact hydrostatic
-    stiffness from the waterline polygon, and a linear roll damping of ``roll_damping`` times
-    critical (default `presets.ASSUMPTIONS['roll_damping']`; it is finalised per frequency
-    with the roll added mass, see `_roll_damping`)."""
-    if cog_z is None:
-        cog_z = float(presets.ASSUMPTIONS["cog_z"]["value"])
-    if roll_damping is None:
-        roll_damping = float(presets.ASSUMPTIONS["roll_damping"]["value"])
-    if not (math.isfinite(cog_z) and cog_z >= 0):
-        raise ValueError(
-            f"parameter 'cog_z' (height of the CoG above the keel) must be >= 0, got {cog_z!r}"
-        )
-    if not (math.isfinite(roll_damping) and 0 <= roll_damping < 1):
-        raise ValueError(
-            f"parameter 'roll_damping' (fraction of critical) must lie in [0, 1), got {roll_damping!r}"
-        )
+    """Free-floating rigid body for ``mesh`` in the `jaxtow.Loading` ``loading``: mass ρ∇,
+    the CoG ``loading.z_g`` above the waterline (over the centre of buoyancy unless
+    ``loading.x_g`` is given), the radii of gyration ``loading.radii`` (default the
+    estimate for the mesh's L and B), exact hydrostatic stiffness from the waterline polygon,
+    and the linear roll damping ``loading.roll_damping`` times critical (finalised per
+    frequency with the roll added mass, `_roll_damping`). Without a loading: the documented
+    estimate, `jaxtow.Loading.estimate` at the mesh's draft (the CoG
+    `ASSUMPTIONS['cog_z']` above the keel, thesis Table B.3)."""
+    keel = float(mesh.vertices[:, 2].min())
+    if loading is None:
+        loading = Loading.estimate(-keel)
+    check_type("loading", loading, Loading)
     V = mesh.volume
     if not V > 0:
         raise ValueError(
             f"mesh {mesh.name!r} has a non-positive displaced volume ({V}); check its normals"
         )
-    keel = float(mesh.vertices[:, 2].min())
+    z_g = float(loading.z_g)
+    if z_g < keel:
+        raise ValueError(
+            f"parameter 'loading': the CoG ({z_g:g} m above the waterline) lies below the keel "
+            f"({keel:g} m)"
+        )
     xb = mesh.centre_of_buoyancy()
-    cog = np.array([xb[0], xb[1], keel + float(cog_z)])
+    x_g = xb[0] if loading.x_g is None else float(loading.x_g)
+    cog = np.array([x_g, xb[1], z_g])
     m = rho * V
-    notes = {"mass": "rho * displaced volume (free floating)", "cog_z": f"{cog_z} m above the keel"}
-    if radii is None:
-        L = float(np.ptp(mesh.vertices[:, 0]))
-        B = float(np.ptp(mesh.vertices[:, 1]))
-        radii = presets.radii_of_gyration(L, B)
-        notes["radii"] = presets.ASSUMPTIONS["radii_of_gyration"]["note"]
-    else:
-        notes["radii"] = "user"
-    kxx, kyy, kzz = (float(r) for r in radii)
+    notes = {"mass": "rho * displaced volume (free floating)", **loading.notes}
+    notes["cog_z"] += f" ({z_g - keel:g} m above the keel)"
+    L = float(np.ptp(mesh.vertices[:, 0]))
+    B = float(np.ptp(mesh.vertices[:, 1]))
+    kxx, kyy, kzz = (float(r) for r in loading.radii_for(L, B))
     inertia = m * np.diag([kxx**2, kyy**2, kzz**2])
     wp = mesh.waterplane()
     xg, yg = cog[0], cog[1]
@@ -91,21 +79,15 @@ def rigid_body(
     Ixx = wp["ixx"] - 2 * xg * wp["sx"] + xg**2 * A  # ∬ (x − x_G)²
     Iyy = wp["iyy"] - 2 * yg * wp["sy"] + yg**2 * A
     Ixy = wp["ixy"] - xg * wp["sy"] - yg * wp["sx"] + xg * yg * A
-    rg = rho * g
-    C = np.zeros((6, 6))
-    C[2, 2] = rg * A
-    C[2, 3] = C[3, 2] = rg * Sy
-    C[2, 4] = C[4, 2] = -rg * Sx
-    C[3, 3] = rg * (Iyy + V * (xb[2] - cog[2]))
-    C[4, 4] = rg * (Ixx + V * (xb[2] - cog[2]))
-    C[3, 4] = C[4, 3] = -rg * Ixy
+    water = Water(rho=rho, g=g)
+    C = np.asarray(hydrostatic_restoring((A, Sx, Sy, Ixx, Iyy, Ixy), V, xb[2], cog[2], water=water))
     if C[3, 3] <= 0:
         raise ValueError(
-            f"the hull is unstable in roll: GM_T = {C[3, 3] / (rg * V):.3f} m <= 0 with cog_z = {cog_z} m"
+            f"parameter 'loading': the hull is unstable in roll: GM_T = "
+            f"{C[3, 3] / (rho * g * V):.3f} m <= 0 with the CoG {z_g - keel:g} m above the keel"
         )
     D = np.zeros((6, 6))
-    D[3, 3] = roll_damping  # fraction of critical; converted per frequency
-    notes["roll_damping"] = f"{roll_damping} of critical (linearised viscous roll damping)"
+    D[3, 3] = float(loading.roll_damping)  # fraction of critical; converted per frequency
     return RigidBody(m, cog, inertia, C, D, notes)
 
 
@@ -117,11 +99,12 @@ def _fixed_body() -> RigidBody:
 
 
 def _roll_damping(body: RigidBody, a44: float) -> np.ndarray:
-    """Dimensional viscous damping: B44 = 2 ζ sqrt(C44 (I44 + A44(ω)))."""
+    """Dimensional viscous damping B44 (`jaxtow.roll_damping_coefficient`) at the roll added
+    mass A44(ω)."""
     D = np.zeros((6, 6))
-    D[3, 3] = (
-        2
-        * body.damping[3, 3]
-        * math.sqrt(body.stiffness[3, 3] * (body.inertia[0, 0] + max(a44, 0.0)))
+    D[3, 3] = float(
+        roll_damping_coefficient(
+            body.damping[3, 3], body.stiffness[3, 3], body.inertia[0, 0] + max(a44, 0.0)
+        )
     )
     return D

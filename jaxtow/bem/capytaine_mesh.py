@@ -140,3 +140,12 @@ def read_mesh(
         else panel_size
     )
     return HullMesh(v, f, lv, lf, name or Path(path).stem, ps, dict(path=str(path)))
+
+
+def available() -> bool:
+    """True when Capytaine can be imported."""
+    try:
+        require_capytaine()
+    except ImportError:
+        return False
+    return True

@@ -6,7 +6,6 @@ into a `QTF`; `box_barge_drift` is the whole pipeline for a box barge (Barge 1).
 from __future__ import annotations
 
 import dataclasses
-import hashlib
 import json
 import math
 from pathlib import Path
@@ -15,11 +14,12 @@ import numpy as np
 import xarray as xr
 
 from .. import presets
+from .._body import Loading
 from .._config import __version__
 from .._progress import progress_meter
 from .._units import RHO_SEA, G
 from ..drift._qtf import QTF
-from ..io._atomic import save_netcdf
+from ..io import Fingerprint, save_netcdf
 from .body import RigidBody, _fixed_body, rigid_body
 from .capytaine_mesh import require_capytaine
 from .meshes import HullMesh, raked_barge_mesh
@@ -37,8 +37,11 @@ _CACHE_VERSION = "nf-lsq-1"
 
 
 def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
+    """The name of one frequency's cache file: the `jaxtow.io.Fingerprint` of every input
+    (the arrays as raw bytes, then the numbers as JSON: the digests of the files the
+    project ships)."""
     cpt = require_capytaine()
-    h = hashlib.sha256()
+    h = Fingerprint()
     for arr in (
         mesh.vertices,
         mesh.faces,
@@ -50,8 +53,8 @@ def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
         body.damping,
         np.asarray(beta, float),
     ):
-        h.update(np.ascontiguousarray(arr).tobytes())
-    h.update(
+        h.raw(np.ascontiguousarray(arr).tobytes())
+    h.raw(
         json.dumps(
             [
                 float(body.mass),
@@ -66,7 +69,7 @@ def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
             ]
         ).encode()
     )
-    return h.hexdigest()[:20]
+    return h.hexdigest(20)
 
 
 def _frequency_dataset(r: dict):
@@ -181,9 +184,7 @@ def bem_drift(
     beta,
     *,
     body: RigidBody | None = None,
-    cog_z: float | None = None,
-    radii=None,
-    roll_damping: float | None = None,
+    loading: Loading | None = None,
     rho: float = RHO_SEA,
     g: float = G,
     water_depth: float = math.inf,
@@ -197,7 +198,8 @@ def bem_drift(
     mesh, solver, versions and assumptions in its attributes).
 
     ``omega`` rad/s (> 0), ``beta`` rad in jaxtow's convention. ``body`` defaults to
-    `rigid_body(mesh, cog_z, radii=..., roll_damping=...)`. With ``cache_dir`` each frequency
+    `rigid_body(mesh, loading)` (``loading`` a `jaxtow.Loading`; None: the documented
+    estimate). With ``cache_dir`` each frequency
     is stored in its own NetCDF file named by a hash of every input, so a rerun (or an
     interrupted run) only solves what is missing. ``progress`` prints a bar on stderr.
     """
@@ -210,7 +212,7 @@ def bem_drift(
         raise ValueError("parameter 'beta' must be strictly ascending [rad]")
     require_capytaine()
     if body is None and not fixed:
-        body = rigid_body(mesh, cog_z, radii=radii, roll_damping=roll_damping, rho=rho, g=g)
+        body = rigid_body(mesh, loading, rho=rho, g=g)
     if body is None:
         body = _fixed_body()
     solve = dict(rho=rho, g=g, water_depth=water_depth, fixed=fixed, theta_step=theta_step)
@@ -279,18 +281,18 @@ def box_barge_drift(
     length: float,
     breadth: float,
     draft: float,
-    cog_z: float,
     omega,
     beta,
     *,
+    loading: Loading | None = None,
     panel_size: float = 2.0,
     rake: float = 0.0,
     **kwargs,
 ):
     """Panel-method mean drift of a (raked) box barge: `BEMDrift` with ``far_field`` and
     ``near_field`` jaxtow `QTF` (SI per ζa², β = 0 head seas; completed by symmetry when β
-    starts at 0) and the full ``dataset``. ``cog_z`` is the CoG height above the keel [m];
-    other keywords go to `bem_drift` (cache_dir, progress, radii, roll_damping, ...)."""
+    starts at 0) and the full ``dataset``. ``loading``: a `jaxtow.Loading` (None: the
+    documented estimate); other keywords go to `bem_drift` (cache_dir, progress, ...)."""
 
     mesh = raked_barge_mesh(
         length,
@@ -300,7 +302,7 @@ def box_barge_drift(
         panel_size=panel_size,
         name="box_barge" if rake == 0 else "raked_barge",
     )
-    ds = bem_drift(mesh, omega, beta, cog_z=cog_z, **kwargs)
+    ds = bem_drift(mesh, omega, beta, loading=loading, **kwargs)
     sym = bool(np.isclose(float(np.min(ds.beta)), 0.0))
     return BEMDrift(
         qtf_from_bem(ds, "far_field", symmetric=sym),

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..strip import Hull, contour
+from ..strip import Hull, resample_contour
 from .meshes import HullMesh
 
 
@@ -50,7 +50,7 @@ def mesh_hull(mesh: HullMesh, *, n_stations: int = 21, n_points: int = 12) -> Hu
     equal strips over the mesh's length; each section's half-breadths are read at 201
     heights from the waterline to its deepest point and its contour, closed to the
     centreline at the keel, resampled to ``n_points`` offsets along its arc length
-    (`jaxtow.strip.contour`, as `jaxtow.strip.offsets_file`). The hull ends in a transom when the mesh's aft end has a section
+    (`jaxtow.strip.resample_contour`, as `jaxtow.io.read_offsets`). The hull ends in a transom when the mesh's aft end has a section
     at least half as deep as the deepest. Only the hull panels are cut (not the lid)."""
     if n_stations < 2 or n_points < 3:
         raise ValueError(
@@ -75,7 +75,7 @@ def mesh_hull(mesh: HullMesh, *, n_stations: int = 21, n_points: int = 12) -> Hu
             continue
         z = -depth * s
         inset = np.clip(z, -depth * (1 - 1e-9), -depth * 1e-9)  # inside the hull's extent
-        y, zc = contour(_half_breadths(seg, inset), z, n_points)
+        y, zc = resample_contour(_half_breadths(seg, inset), z, n_points)
         ys.append(y)
         zs.append(zc)
         keep.append(i)

@@ -36,7 +36,6 @@ from filelock import FileLock, Timeout
 
 import jaxtow as jt
 
-from .._interrupt import sticky as sticky_interrupt
 from . import (
     bem,
     bifurcation,
@@ -94,6 +93,15 @@ def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
     out = getattr(args, "out", None)
     lock = _lock_output(out)
+    try:
+        return _run(args, argv, out, no_cache)
+    finally:
+        if lock is not None:
+            lock.close()
+
+
+def _run(args, argv, out, no_cache: bool) -> int:
+    """The command, with its manifest, under the output folder's lock (held by `main`)."""
     fingerprint = getattr(args, "fingerprint", None)
     request = fingerprint(args) if fingerprint is not None else None
     if request is not None and not getattr(args, "force", False):
@@ -104,8 +112,6 @@ def main(argv=None) -> int:
                 f"asked the same and wrote {len(done['outputs'])} files, all still there "
                 "(--force recomputes)"
             )
-            if lock is not None:
-                lock.close()
             return 0
     import matplotlib
 
@@ -118,18 +124,20 @@ def main(argv=None) -> int:
     matplotlib.use("Agg")  # the command line writes figures to files; it never opens windows
     manifest = None
     if out is not None:
-        manifest = Manifest(out, args, argv, request=request)
+        naming = getattr(args, "manifest_name", None)
+        name = naming(args) if naming is not None else None
+        manifest = Manifest(out, args, argv, request=request, name=name)
         manifest.start()
     status, error = "failed", None
     try:
-        with sticky_interrupt():  # a Ctrl-C swallowed on its way still stops a study
+        with jt.sticky_interrupts():  # a Ctrl-C swallowed on its way still stops a study
             args.func(args)
         status = "finished"
     except KeyboardInterrupt:
         status = "interrupted"
         kept = (
             f" Files already written in {out} are complete (each is written under a temporary "
-            "name and renamed when done; the list is in its jaxtow_run.json); `jaxtow map` "
+            "name and renamed when done; the list is in its run manifest); `jaxtow map` "
             "keeps its finished chunks and resumes from them when run again; `jaxtow study` "
             "keeps its finished steps and continues from them with --resume."
             if out is not None
@@ -148,12 +156,8 @@ def main(argv=None) -> int:
         error = str(e.code) if isinstance(e.code, str) else f"exit status {e.code}"
         raise
     finally:
-        try:
-            if manifest is not None:
-                manifest.end(status, error)
-        finally:
-            if lock is not None:
-                lock.close()
+        if manifest is not None:
+            manifest.end(status, error)
     return 0
 
 

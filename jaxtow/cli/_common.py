@@ -67,7 +67,7 @@ def tow_names(args, command: str) -> list:
 
 def tow_model(args, tow_name=None, overrides=None, command: str = ""):
     """(model, tow name): the tow's calm-water model with the command line's overrides
-    (``--u-tug`` rescales EA' as `jaxtow.at_tug_speed`; ``--l0``, ``--xp``, ``--EA`` and
+    (``--u-tug`` rescales EA' as `jaxtow.at_tug_speed`; ``--l0``, ``--xp``, ``--EA-N`` and
     ``--set NAME=VALUE`` set parameters)."""
 
     command = command or getattr(args, "command", "")
@@ -83,7 +83,7 @@ def tow_model(args, tow_name=None, overrides=None, command: str = ""):
         if getattr(args, "u_tug", None) is not None:
             model = jt.at_tug_speed(model, args.u_tug)
         sets = {k: getattr(args, k) for k in ("l0", "xp") if getattr(args, k, None) is not None}
-        EA = ea_nondimensional(args, model.reference_scales)
+        EA = ea_nondimensional(args, model.reference_scales, command)
         if EA is not None:
             sets["EA"] = EA
         sets.update(overrides or {})
@@ -93,32 +93,67 @@ def tow_model(args, tow_name=None, overrides=None, command: str = ""):
         raise SystemExit(f"error: {e}") from None
 
 
-#: The least axial stiffness [N] `--EA` takes: real towlines are 1e6-1e9 N; a smaller value
+#: The least axial stiffness [N] `--EA-N` takes: real towlines are 1e6-1e9 N; a smaller value
 #: is almost surely the non-dimensional EA' given to the wrong flag.
 EA_MIN_N = 1e3
 
 
-def check_ea_newtons(EA: float, command: str = "") -> None:
-    """Refuse an ``--EA`` below `EA_MIN_N`: the non-dimensional EA' given to the N flag."""
-    if EA < EA_MIN_N:
-        raise SystemExit(
-            f"{'jaxtow ' + command + ': ' if command else ''}error: argument --EA: the axial "
-            f"stiffness in N (the tow file's unit), got {EA:g}; for the non-dimensional EA' "
-            "use --EA-nd"
+def ea_arguments(p) -> None:
+    """``--EA-N`` (newtons), ``--EA-nd`` (the non-dimensional EA') and the deprecated
+    ``--EA`` (read as ``--EA-N``, with a warning): one unambiguous name for each unit."""
+    p.add_argument(
+        "--EA-N",
+        dest="EA_N",
+        type=positive_float,
+        default=None,
+        help="towline axial stiffness EA [N] (tow file: EA_N)",
+    )
+    p.add_argument(
+        "--EA-nd",
+        dest="EA_nd",
+        type=positive_float,
+        default=None,
+        help="towline stiffness EA' = EA/(rho T L U^2/2), non-dimensional (tow file: EA_nd)",
+    )
+    p.add_argument("--EA", dest="EA_old", type=positive_float, help=argparse.SUPPRESS)
+
+
+def ea_option(args, command: str = "") -> float | None:
+    """The stiffness in newtons given on the command line (``--EA-N``, or the deprecated
+    ``--EA`` with a warning), checked against `EA_MIN_N`; None when not given. Refuses
+    ``--EA-N`` together with ``--EA-nd``."""
+    prefix = f"jaxtow {command}: " if command else ""
+    EA = getattr(args, "EA_N", None)
+    old = getattr(args, "EA_old", None)
+    if old is not None:
+        if EA is not None:
+            raise SystemExit(f"{prefix}error: give --EA-N only (--EA is its deprecated spelling)")
+        print(
+            f"{prefix}warning: --EA is deprecated: it is read as --EA-N (newtons)", file=sys.stderr
         )
+        EA = old
+    if EA is not None and getattr(args, "EA_nd", None) is not None:
+        raise SystemExit(
+            f"{prefix}error: give --EA-N (in N) or --EA-nd (non-dimensional), not both"
+        )
+    if EA is not None and EA < EA_MIN_N:
+        raise SystemExit(
+            f"{prefix}error: argument --EA-N: the axial stiffness in N, got {EA:g}; for the "
+            "non-dimensional EA' use --EA-nd"
+        )
+    return EA
 
 
-def ea_nondimensional(args, scales):
-    """EA' from ``--EA`` [N] (the tow file's unit: EA' = EA/(½ρTLU²) with the model's
-    scales) or ``--EA-nd``; None when neither is given."""
-    EA, EA_nd = getattr(args, "EA", None), getattr(args, "EA_nd", None)
-    if EA is not None and EA_nd is not None:
-        raise SystemExit("error: give --EA (in N) or --EA-nd (non-dimensional), not both")
+def ea_nondimensional(args, scales, command: str = ""):
+    """EA' from ``--EA-N`` [N] (EA' = EA/(½ρTLU²) with the model's scales) or ``--EA-nd``;
+    None when neither is given."""
+    EA = ea_option(args, command)
     if EA is None:
-        return EA_nd
-    check_ea_newtons(EA)
+        return getattr(args, "EA_nd", None)
     if scales is None:
-        raise SystemExit("error: argument --EA: the model has no scales to convert N; use --EA-nd")
+        raise SystemExit(
+            "error: argument --EA-N: the model has no scales to convert N; use --EA-nd"
+        )
     return EA / float(scales.force)
 
 
@@ -153,19 +188,7 @@ def model_options(p):
         default=None,
         help="tug speed U_tug [m/s]; rescales EA' (default: the tow file's speed)",
     )
-    p.add_argument(
-        "--EA",
-        type=positive_float,
-        default=None,
-        help="towline axial stiffness EA [N], as in the tow file (default: the tow file's)",
-    )
-    p.add_argument(
-        "--EA-nd",
-        dest="EA_nd",
-        type=positive_float,
-        default=None,
-        help="towline stiffness EA' = EA/(rho T L U^2/2), non-dimensional (instead of --EA)",
-    )
+    ea_arguments(p)
     p.add_argument(
         "--l0",
         type=float,
@@ -186,31 +209,24 @@ def model_options(p):
     )
 
 
-def run_time_domain(model, vname, args, out: Path) -> dict:
-    """Run from the thesis's initial condition, write figures and the run; return metrics."""
+def time_domain_settings(args) -> dict:
+    """The keywords of `jaxtow.studies.time_domain_run` from the command line's options."""
+    return dict(psi0_deg=args.psi0, y0=args.y0, t1=args.t1, n_save=args.n_save, solver=args.solver)
 
-    try:
-        y0 = jt.initial_state(model, psi0=math.radians(args.psi0), y0=args.y0)
-        sim = jt.simulate(model, y0, t1=args.t1, n_save=args.n_save, solver=args.solver)
-    except ValueError as e:
-        raise SystemExit(f"error: {e}") from None
-    met = jt.fishtail_metrics(model, sim)
-    traj = jt.trajectory(model, sim)
+
+def write_time_domain(model, vname, run, args, out: Path) -> None:
+    """The figures, the run's arrays and one line of a `jaxtow.studies.TimeDomainRun`."""
     title = (
         f"{model.vessel.name}: xp'={float(model.towline.xp)}, l0'={float(model.towline.l0)}, "
         f"psi0={args.psi0} deg, y0'={args.y0}"
     )
+    td = jt.plotting.timedomain
+    jt.plotting.save(td.plot_time_traces(run.trajectory, title), out / f"{vname}_time_traces.png")
     jt.plotting.save(
-        jt.plotting.timedomain.plot_time_traces(traj, title), out / f"{vname}_time_traces.png"
+        td.plot_phase_portraits(run.trajectory, title), out / f"{vname}_phase_portraits.png"
     )
-    jt.plotting.save(
-        jt.plotting.timedomain.plot_phase_portraits(traj, title),
-        out / f"{vname}_phase_portraits.png",
-    )
-    jt.plotting.save(
-        jt.plotting.timedomain.plot_force_history(jt.force_history(model, sim), title),
-        out / f"{vname}_forces.png",
-    )
+    jt.plotting.save(td.plot_force_history(run.forces, title), out / f"{vname}_forces.png")
+    sim = run.simulation
     flags = {k: np.asarray(v) for k, v in sim.validity.items()}
     np.savez(
         out / f"{vname}_run.npz",
@@ -218,19 +234,15 @@ def run_time_domain(model, vname, args, out: Path) -> dict:
         y=np.asarray(sim.ys),
         **{f"validity_{k}": v for k, v in flags.items()},
     )
-    finite = np.all(np.isfinite(np.asarray(sim.ys)), axis=-1)
-    share = {
-        k: float(np.mean(v[finite])) for k, v in flags.items() if v.dtype == bool and finite.any()
-    }
-    w = met["path_width"]
+    met = run.metrics
+    w = met.path_width
     print(
-        f"{vname} time domain: {met['outcome']}; path width {w if w is None else round(w, 3)} L, "
-        f"yaw range {tuple(round(a, 2) for a in met['yaw_range']) if met['yaw_range'] else None} deg, "
-        f"slewing period {met['slewing_period'] and round(met['slewing_period'], 2)}, "
-        f"heading damping {met['damping']['zeta'] and round(met['damping']['zeta'], 4)} ({met['damping']['method']})"
-        + (f"; ENDED EARLY at t'={met['t_end']:.1f}" if met["ended_early"] else "")
+        f"{vname} time domain: {met.outcome}; path width {w if w is None else round(w, 3)} L, "
+        f"yaw range {tuple(round(a, 2) for a in met.yaw_range) if met.yaw_range else None} deg, "
+        f"slewing period {met.slewing_period and round(met.slewing_period, 2)}, "
+        f"heading damping {met.damping.zeta and round(met.damping.zeta, 4)} ({met.damping.method})"
+        + (f"; ENDED EARLY at t'={met.t_end:.1f}" if met.ended_early else "")
     )
-    return met | dict(n_steps=int(sim.n_steps), validity_share_of_run=share)
 
 
 def time_domain_options(p, t1_default=400.0):

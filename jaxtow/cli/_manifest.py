@@ -1,5 +1,6 @@
-"""The run manifest: ``OUT/jaxtow_run.json``, what a command was asked, with what, and how far
-it got.
+"""The run manifest: ``OUT/jaxtow_run.json`` (a study's: ``OUT/<tow>_run.json``, so that two
+studies in one folder keep one each), what a command was asked, with what, and how far it
+got.
 
 Written when the run starts (status ``running``) and again when it ends (``finished``,
 ``interrupted`` or ``failed`` with the one-line error), each time atomically. It holds the
@@ -49,8 +50,8 @@ def _plain(v):
 class Manifest:
     """The manifest of one run into ``out``: `start` writes it, `end` completes it."""
 
-    def __init__(self, out, args, argv, request: str | None = None):
-        self.path = Path(out) / NAME
+    def __init__(self, out, args, argv, request: str | None = None, name: str | None = None):
+        self.path = Path(out) / (name or NAME)
         self.t0 = time.time()
         options = {k: _plain(v) for k, v in vars(args).items() if k not in ("func", "fingerprint")}
 
@@ -89,7 +90,8 @@ class Manifest:
             rel = p.relative_to(folder)
             if (
                 p.is_file()
-                and p.name != NAME
+                and p.name != self.path.name
+                and not p.name.endswith("_run.json")
                 and not any(part.startswith(".") for part in rel.parts)
                 and p.stat().st_mtime >= self.t0 - 1.0
             ):
@@ -97,8 +99,7 @@ class Manifest:
         return found
 
     def _write(self) -> None:
-        with jt.io._atomic.atomic_path(self.path) as tmp:
-            tmp.write_text(json.dumps(self.record, indent=2, default=str) + "\n")
+        jt.io.write_file(self.path, json.dumps(self.record, indent=2, default=str) + "\n")
 
 
 def up_to_date(out, request: str | None) -> dict | None:

@@ -11,7 +11,6 @@ RAOs (B.2, B.3), the QTFs (4.3c, 4.4c, 4.5a, B.4) and the near-field parts (2.11
 
 from __future__ import annotations
 
-import hashlib
 import json
 import math
 import sys
@@ -23,7 +22,6 @@ import numpy as np
 
 import jaxtow as jt
 
-from ..io._atomic import save_figure, save_netcdf, write_file
 from ._common import positive_float, positive_int
 from ._config import config_dispatch, config_text, read_config as _read_config
 from .tow import load_tow
@@ -114,13 +112,22 @@ def build(cfg: dict, panel_size: float | None = None):
         if str(depth).lower() in ("inf", "infinity")
         else _number(depth, "[waves] water_depth")
     )
-    kw = dict(
-        cog_z=m.get("cog_z"),
-        roll_damping=m.get("roll_damping"),
-        radii=m.get("radii"),
-        water_depth=depth,
-    )
-    return builder, size, omega, beta, kw
+    kw = dict(water_depth=depth)
+    return builder, size, omega, beta, kw, _loading(m)
+
+
+def _loading(mass: dict):
+    """The loading condition of a mesh from the config's [mass] (``cog_z`` above the keel,
+    ``radii``, ``roll_damping``; the documented estimates for what it leaves out)."""
+    given = {k: mass[k] for k in ("radii", "roll_damping") if k in mass}
+
+    def of(mesh):
+        draft = -float(mesh.vertices[:, 2].min())
+        if "cog_z" in mass:
+            return jt.Loading.above_keel(float(mass["cog_z"]), draft, **given)
+        return jt.Loading.estimate(draft, **given)
+
+    return of
 
 
 def cmd_bem(args):
@@ -129,7 +136,7 @@ def cmd_bem(args):
     except ImportError as e:
         raise SystemExit(f"jaxtow bem: {e}") from None
     try:
-        builder, size, omega, beta, kw = build(read_config(args.config), args.panel_size)
+        builder, size, omega, beta, kw, loading = build(read_config(args.config), args.panel_size)
         if args.n_omega:
             omega = np.linspace(omega[0], omega[-1], args.n_omega)
     except (ValueError, KeyError, OSError) as e:
@@ -138,15 +145,18 @@ def cmd_bem(args):
     out.mkdir(parents=True, exist_ok=True)
     cache = Path(args.cache) if args.cache else out / "cache"
     if args.convergence:
-        _convergence(args, builder, omega, beta, cache, kw, out)
+        sizes = [float(s) for s in args.convergence.split(",")]
+        kw["loading"] = loading(builder(sizes[0]))
+        _convergence(args, builder, sizes, omega, beta, cache, kw, out)
         return
     mesh = builder(size)
+    kw["loading"] = loading(mesh)
     print(
         f"{mesh.name}: {mesh.n_panels} hull panels + {len(mesh.lid_faces)} lid panels, {omega.size} frequencies "
         f"x {beta.size} headings"
     )
     ds = jt.bem.bem_drift(mesh, omega, beta, cache_dir=cache, progress=not args.quiet, **kw)
-    save_netcdf(ds, out / "bem.nc")
+    jt.io.save_netcdf(ds, out / "bem.nc")
     bad = ds.omega.values[~ds.resolved.values]
     if bad.size:
         print(
@@ -159,21 +169,20 @@ def cmd_bem(args):
         q = jt.bem.qtf_from_bem(ds, method, symmetric=sym)
         jt.io.save_qtf(q, out / f"qtf_{method}.nc", attrs=jt.bem.qtf_attrs(ds, method))
     summary = jt.bem.summary.bem_summary(ds, mesh)
-    write_file(out / "summary.json", json.dumps(summary, indent=2))
+    jt.io.write_file(out / "summary.json", json.dumps(summary, indent=2))
     _figures(ds, beta, out)
     keys = ("short_wave_surge_head_seas", "near_vs_far_fx", "near_vs_far_fy")
     print(json.dumps({k: summary[k] for k in keys}, indent=1))
     print(f"wrote bem.nc, qtf_far_field.nc, qtf_near_field.nc, figures and summary.json to {out}")
 
 
-def _convergence(args, builder, omega, beta, cache, kw, out: Path) -> None:
+def _convergence(args, builder, sizes, omega, beta, cache, kw, out: Path) -> None:
     """``--convergence``: the drift at several panel sizes (thesis fig. B.1)."""
-    sizes = [float(s) for s in args.convergence.split(",")]
     runs, summary = jt.bem.mesh_convergence(
         builder, sizes, omega, beta, cache_dir=cache, progress=not args.quiet, **kw
     )
-    save_netcdf(summary, out / "convergence.nc")
-    save_figure(
+    jt.io.save_netcdf(summary, out / "convergence.nc")
+    jt.plotting.save(
         jt.plotting.bem.plot_mesh_convergence(summary, runs),
         out / "fig_B1_convergence.png",
         dpi=120,
@@ -190,9 +199,9 @@ def _figures(ds, beta, out: Path) -> None:
     """RAOs, QTFs and near-field parts at up to three headings of the solve."""
     bds = [float(np.degrees(b)) for b in beta[:: max(1, beta.size // 3)]][:3]
     for bd in sorted(set([bds[0], 15.0 if np.any(np.isclose(np.degrees(beta), 15)) else bds[-1]])):
-        save_figure(jt.plotting.bem.plot_rao(ds, bd), out / f"fig_rao_beta{bd:g}.png", dpi=110)
-    save_figure(jt.plotting.bem.plot_bem_qtf(ds, bds), out / "fig_qtf.png", dpi=110)
-    save_figure(
+        jt.plotting.save(jt.plotting.bem.plot_rao(ds, bd), out / f"fig_rao_beta{bd:g}.png", dpi=110)
+    jt.plotting.save(jt.plotting.bem.plot_bem_qtf(ds, bds), out / "fig_qtf.png", dpi=110)
+    jt.plotting.save(
         jt.plotting.bem.plot_nearfield_parts(ds, bds[min(1, len(bds) - 1)]),
         out / "fig_nearfield_parts.png",
         dpi=110,
@@ -251,10 +260,10 @@ def fingerprint(args) -> str | None:
         return None
     if "vessel" in cfg:  # a tow file: its mesh and estimates resolve through load_tow
         return None
-    digest = hashlib.sha256()
+    digest = jt.io.Fingerprint()
 
     def add(label, data: bytes):
-        digest.update(f"{label}:{len(data)}:".encode() + data)
+        digest.labelled(label, data)
 
     add("config", text.encode())
     mesh = cfg.get("hull", {}).get("path") if cfg.get("hull", {}).get("kind") == "file" else None
@@ -307,15 +316,15 @@ def _tow_file_config(spec):
         return None
 
     tow = load_tow(spec, "bem")
-    mesh = tow.drift_spec
-    if not (isinstance(mesh, dict) and "mesh" in mesh):
+    mesh = tow.drift
+    if not isinstance(mesh, jt.bem.MeshDriftSource):
         raise SystemExit(
             f"jaxtow bem: error: tow file {spec} has no [hull] mesh to solve (its drift comes "
-            f"from {tow.assumed[-1][1] if tow.assumed else 'elsewhere'})"
+            f"from {mesh.describe()})"
         )
-    mass = {} if mesh["cog_z"] is None else {"cog_z": mesh["cog_z"]}
+    mass = {} if mesh.cog_z is None else {"cog_z": mesh.cog_z}
     return {
-        "hull": {"kind": "file", "path": mesh["mesh"]},
+        "hull": {"kind": "file", "path": mesh.mesh},
         "mass": mass,
-        "waves": {"omega": list(mesh["omega"]), "beta_deg": list(mesh["beta_deg"])},
+        "waves": {"omega": list(mesh.omega), "beta_deg": list(mesh.beta_deg)},
     }

@@ -7,7 +7,6 @@ from pathlib import Path
 
 import jaxtow as jt
 
-from ..io._atomic import write_file
 from ._common import positive_float, tow_model, tow_option
 
 
@@ -41,7 +40,7 @@ def cmd_bifurcation(args):
         limit_cycles=study.cycles,
         assumed_values=dict(model.assumed),
     )
-    write_file(stem.with_suffix(".json"), json.dumps(record, indent=2, default=float))
+    jt.io.write_file(stem.with_suffix(".json"), json.dumps(record, indent=2, default=float))
     _print(model.vessel.name, args.param, lo, hi, study)
     print(f"wrote figure and JSON to {out}")
 

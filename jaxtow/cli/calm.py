@@ -5,21 +5,21 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-import numpy as np
+import msgspec
 
 import jaxtow as jt
 
-from ..io._atomic import write_file
 from ._common import (
     grid_option,
     model_options,
     parse_sets,
     positive_int,
-    run_time_domain,
     time_domain_options,
+    time_domain_settings,
     tow_model,
     tow_names,
     tow_option,
+    write_time_domain,
 )
 
 
@@ -27,75 +27,61 @@ def cmd_calm(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sets = parse_sets(args.set)
-    summary = {}
-    opts = dict(method="numerical", progress=not args.quiet, chunk_size=args.chunk_size)
-    for name in tow_names(args, "calm"):
-        model, vname = tow_model(args, name, sets, "calm")
-        c = float(model.vessel.stability_coefficient())
-        ds_xp = jt.sweep(model, {"xp": grid_option(args.xp_grid, "xp-grid")}, **opts)
-        ds_l0 = jt.sweep(model, {"l0": grid_option(args.l0_grid, "l0-grid")}, **opts)
-        ds_map = jt.sweep(
-            model,
-            {"xp": grid_option(args.map_xp, "map-xp"), "l0": grid_option(args.map_l0, "map-l0")},
-            **opts,
+    models = dict(tow_model(args, name, sets, "calm")[::-1] for name in tow_names(args, "calm"))
+    td = None if args.no_time_domain else time_domain_settings(args)
+    try:
+        study = jt.studies.calm_study(
+            models,
+            xp_grid=grid_option(args.xp_grid, "xp-grid"),
+            l0_grid=grid_option(args.l0_grid, "l0-grid"),
+            map_xp=grid_option(args.map_xp, "map-xp"),
+            map_l0=grid_option(args.map_l0, "map-l0"),
+            chunk_size=args.chunk_size,
+            progress=not args.quiet,
+            time_domain=td,
         )
-        for tag, ds in (
-            ("equilibria_vs_xp", ds_xp),
-            ("max_real_vs_l0", ds_l0),
-            ("map_xp_l0", ds_map),
-        ):
-            jt.io.save_dataset(ds, out / f"{vname}_{tag}.nc")
+    except ValueError as e:
+        raise SystemExit(f"jaxtow calm: error: {e}") from None
+    for vname, model in models.items():
+        ds = study.datasets[vname]
+        for tag, d in ds.items():
+            jt.io.save_dataset(d, out / f"{vname}_{tag}.nc")
+        line = model.towline
         jt.plotting.save(
             jt.plotting.plot_equilibria_vs(
-                ds_xp,
+                ds["equilibria_vs_xp"],
                 "xp",
-                title=f"{model.vessel.name}: equilibria (fig. 6.3), l0'={float(model.towline.l0):g}",
+                title=f"{model.vessel.name}: equilibria (fig. 6.3), l0'={float(line.l0):g}",
             ),
             out / f"{vname}_equilibria_vs_xp.png",
         )
         jt.plotting.save(
             jt.plotting.plot_max_real_vs(
-                ds_l0,
+                ds["max_real_vs_l0"],
                 "l0",
-                title=f"{model.vessel.name}: max Re(lambda), xp'={float(model.towline.xp):g} (fig. 6.4)",
+                title=f"{model.vessel.name}: max Re(lambda), xp'={float(line.xp):g} (fig. 6.4)",
             ),
             out / f"{vname}_max_real_vs_l0.png",
         )
         jt.plotting.save(
-            jt.plotting.plot_stability_map(ds_map, "xp", "l0"), out / f"{vname}_map_xp_l0.png"
+            jt.plotting.plot_stability_map(ds["map_xp_l0"], "xp", "l0"),
+            out / f"{vname}_map_xp_l0.png",
         )
-        # Summary numbers at the configured (xp, l0).
-        eqs = jt.equilibria(model)
-        st = jt.stability(model, eqs.state)
-        straight = (
-            ds_l0["max_real"].where(ds_l0["valid"] & (ds_l0["branch"] == 0)).max("equilibrium")
-        )
-        summary[vname] = dict(
-            stability_coefficient_c=c,
-            course_stable=c > 0,
-            xp=float(model.towline.xp),
-            l0=float(model.towline.l0),
-            EA=float(model.towline.EA),  # pyright: ignore[reportAttributeAccessIssue]
-            equilibria_psi_deg=[float(np.degrees(p)) for p in eqs.psi],
-            equilibria_max_real=[float(v) for v in st.max_real],
-            equilibria_stability=[jt.STABILITY_LABELS[int(s)] for s in st.stability],
-            straight_behind_max_real_range_over_l0=[float(straight.min()), float(straight.max())],
-            assumed_values=dict(model.assumed),
-        )
-        if not args.no_time_domain:
-            summary[vname]["time_domain"] = run_time_domain(model, vname, args, out)
-    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
-    for vname, s in summary.items():
+        if vname in study.runs:
+            write_time_domain(model, vname, study.runs[vname], args, out)
+    records = {k: msgspec.to_builtins(r) for k, r in study.records.items()}
+    jt.io.write_file(out / "summary.json", json.dumps(records, indent=2))
+    for vname, r in study.records.items():
         print(
-            f"{vname}: c = {s['stability_coefficient_c']:+.4f} ({'course stable' if s['course_stable'] else 'course unstable'})"
+            f"{vname}: c = {r.stability_coefficient_c:+.4f} ({'course stable' if r.course_stable else 'course unstable'})"
         )
-        for p, mr, lab in zip(
-            s["equilibria_psi_deg"], s["equilibria_max_real"], s["equilibria_stability"]
-        ):
-            print(f"   psi = {p:+8.3f} deg   max Re(lambda) = {mr:+.5f}   {lab}")
-        lo, hi = s["straight_behind_max_real_range_over_l0"]
+        for e in r.design.equilibria:
+            print(
+                f"   psi = {e.psi_deg:+8.3f} deg   max Re(lambda) = {e.max_real_nd:+.5f}   {e.stability}"
+            )
+        lo, hi = r.straight_max_real_range_over_l0
         print(f"   straight behind, max Re(lambda) over l0' grid: [{lo:+.4f}, {hi:+.4f}]")
-    print("note: draft, added masses and EA' are documented estimates (jaxtow.presets.ASSUMPTIONS)")
+    print("note: draft, added masses and EA' are documented estimates (jaxtow.ASSUMPTIONS)")
     print(f"wrote figures, NetCDF datasets and summary.json to {out}")
 
 

@@ -7,7 +7,6 @@ from pathlib import Path
 
 import jaxtow as jt
 
-from ..io._atomic import write_file
 from ._common import positive_int, tow_names, tow_option
 from .tow import load_tow
 
@@ -33,9 +32,9 @@ def _waterline(args):
 
 
 def cmd_drift(args):
-    if args.base not in jt.drift.METHODS:
+    if args.base not in jt.drift.WATERLINE_METHODS:
         raise SystemExit(
-            f"error: --base {args.base!r} is not a drift method; choose from {sorted(jt.drift.METHODS)}"
+            f"error: --base {args.base!r} is not a drift method; choose from {sorted(jt.drift.WATERLINE_METHODS)}"
         )
     wl = _waterline(args)
     study = jt.studies.drift_methods_study(
@@ -54,7 +53,7 @@ def cmd_drift(args):
     for stem, ax in jt.plotting.drift.drift_study_figures(study).items():
         jt.plotting.save(ax, out / f"{stem}.png")
     summary = study.summary
-    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
+    jt.io.write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     print(
         f"{wl.name}: L = {summary['length']:g} m, B = {summary['breadth']:g} m, "
         f"T = {summary['draft']:g} m, C_B = {summary['block_coefficient']:.3f}"

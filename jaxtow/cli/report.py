@@ -8,21 +8,15 @@ reproduce (`jaxtow.studies.WaveStudy`, `jaxtow.studies.attribute`)."""
 from __future__ import annotations
 
 import json
-import time
 from pathlib import Path, Path as _P
 
 import jaxtow as jt
 
-from ..io._atomic import write_file
-from ..reports._claims import SOURCE_NAMES, SOURCES, claims_markdown, claims_table
 from ._common import positive_float, positive_int
 
 
-def _figures(study, out: Path, summary: dict, progress: bool) -> None:
-    """Figures and NetCDF datasets of the primary study (drift source and form), and the
-    share of each map that meets each validity flag."""
-
-    validity = summary.setdefault("validity_share", {})
+def _figures(study, out: Path) -> None:
+    """Figures and NetCDF datasets of the primary study (drift source and form)."""
     for v in ("2a", "2b"):
         for tag, maps in (
             ("map_l0_omega", study.maps_l0_omega),
@@ -31,8 +25,6 @@ def _figures(study, out: Path, summary: dict, progress: bool) -> None:
             ("map_utug_omega", study.maps_utug_omega),
         ):
             jt.io.save_dataset(maps[v], out / f"barge_{v}_{tag}.nc")
-            if tag.startswith("map_"):
-                validity[f"barge_{v}_{tag}"] = jt.studies.validity_share(maps[v])
     for tag, ds in study.maps_xp.items():
         jt.io.save_dataset(ds, out / f"barge_2a_equilibria_xp_{tag}.nc")
     for stem, ax in jt.plotting.waves_report.wave_study_figures(study).items():
@@ -79,14 +71,9 @@ def file_options(pairs) -> dict:
     return out
 
 
-def _key(spec) -> str:
-    """The claims-table key of a drift source spec (a drift-file mapping: its file)."""
-    return spec if isinstance(spec, str) else str(spec["file"])
-
-
 def plan(args):
     """(primary source, sources, forms) of a report: the primary source and form first, then
-    the others of ``--sources`` / ``--forms`` (default: all of `SOURCES`, aranha and thesis)."""
+    the others of ``--sources`` / ``--forms`` (default: all of `jt.reports.SOURCES`, aranha and thesis)."""
     primary = args.qtf or "near_field"
     opts = getattr(args, "qtf_option", None) or []
     if opts:
@@ -95,7 +82,7 @@ def plan(args):
                 f"jaxtow report: --qtf-option applies to a drift file; --qtf {primary!r} is none"
             )
         primary = dict(file=primary, **file_options(opts))
-    srcs = args.sources.split(",") if args.sources else SOURCES
+    srcs = args.sources.split(",") if args.sources else jt.reports.SOURCES
     fms = args.forms.split(",") if args.forms else ("aranha", "thesis")
     sources = [primary] + [s for s in srcs if s and s != primary]
     forms = [args.form] + [f for f in fms if f and f != args.form]
@@ -105,79 +92,47 @@ def plan(args):
 def cmd_report(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
-    progress = not args.quiet
     primary, sources, forms = plan(args)
-    common = dict(
-        zeta_a=args.zeta_a, hs=args.hs, n=args.n, n_grid=args.n_grid, t1=args.t1, wind=args.wind
-    )
-    base = jt.studies.WaveStudy(qtf=primary, form=args.form, progress=progress, **common)
-    summary: dict = dict(
-        drift_source=base.source,
+
+    def keep(message: str, claims: list) -> None:
+        print(message, flush=True)
+        # the full report runs for hours on 2 cores: a run stopped on the way keeps the
+        # claims it has (overwritten at the end)
+        jt.io.write_file(out / "claims.partial.json", json.dumps(claims, indent=2, default=float))
+
+    report = jt.studies.wave_report(
+        primary,
+        sources,
+        forms,
+        progress=not args.quiet,
+        attribution=args.attribution,
+        attribution_n=args.attribution_n,
+        panel_variants=_panel_variants(args.panel_variants) if args.panel_variants else None,
+        slow_drift_hours=args.slow_drift_hours,
+        on_progress=keep,
         zeta_a=args.zeta_a,
-        u_tug=jt.presets.U_TUG_DEFAULT,
-        xp=0.5,
-        sailing_form=args.form,
-        sources={_key(s): jt.presets.drift_source(s)[1] for s in sources},
-        forms=forms,
-        assumptions={k: v["note"] for k, v in jt.presets.ASSUMPTIONS.items()},
-        plausible_ranges={k: v["note"] for k, v in jt.presets.PLAUSIBLE_RANGES.items()},
+        hs=args.hs,
+        n=args.n,
+        n_grid=args.n_grid,
+        t1=args.t1,
+        wind=args.wind,
     )
-    claims: list = []
-    t0 = time.perf_counter()
-    for s in sources:
-        for f in forms:
-            st = (
-                base
-                if (s, f) == (primary, args.form)
-                else base.variant(qtf=s, form=f, progress=False)
-            )
-            for c in st.claims():
-                c["source_key"] = _key(s)
-                claims.append(c)
-            if (s, f) == (primary, args.form):
-                _figures(st, out, summary, progress)
-            print(
-                f"claims computed: {SOURCE_NAMES.get(_key(s), _key(s))}, {f} ({time.perf_counter() - t0:.0f} s)",
-                flush=True,
-            )
-            # kept as each study finishes: the full report runs for hours on 2 cores, and a
-            # run stopped on the way keeps the claims it has (overwritten at the end)
-            write_file(out / "claims.partial.json", json.dumps(claims, indent=2, default=float))
-    # attribution of every claim of the primary study that does not reproduce
-    variants = _panel_variants(args.panel_variants) if args.panel_variants else None
-    if args.attribution:
-        for c in claims:
-            if (c["source_key"], c["sailing_form"]) == (_key(primary), args.form) and not c[
-                "reproduced"
-            ]:
-                a = jt.studies.attribute(
-                    base, c["id"], n=args.attribution_n, panel_variants=variants
-                )
-                c["attribution"] = a
-                print(
-                    f"attributed: {c['id']}: flipped by {a['flipped_by'] or 'none of the estimates'}",
-                    flush=True,
-                )
-                write_file(out / "claims.partial.json", json.dumps(claims, indent=2, default=float))
-    # slowly varying drift in the time domain
-    if args.slow_drift_hours > 0:
-        sd = jt.studies.slow_drift_runs(base, hours=args.slow_drift_hours)
-        summary["slow_drift"] = {k: v[3] for k, v in sd.items()}
+    summary, claims = report.summary, report.claims
+    _figures(report.primary, out)
+    if report.slow_drift:
         jt.plotting.save(
             jt.plotting.waves_report.plot_runs(
-                {k: (v[0], v[1]) for k, v in sd.items()},
+                {k: (v[0], v[1]) for k, v in report.slow_drift.items()},
                 title=f"Barge 2a, l0' = 2.5, Hs = {args.hs} m, Tp = 7 s: mean vs slowly varying drift",
             ),
             out / "barge_2a_slow_drift.png",
         )
-    summary["claims"] = claims
-    write_file(out / "claims.json", json.dumps(claims, indent=2, default=float))
+    jt.io.write_file(out / "claims.json", json.dumps(claims, indent=2, default=float))
     (out / "claims.partial.json").unlink(missing_ok=True)
-    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
-    table = claims_table(claims)
-    write_file(out / "claims.md", claims_markdown(claims, summary["sources"]))
-    print(table)
-    print(f"primary drift forces: {base.source} ({args.form})")
+    jt.io.write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
+    jt.io.write_file(out / "claims.md", jt.reports.claims_markdown(claims, summary["sources"]))
+    print(jt.reports.claims_table(claims))
+    print(f"primary drift forces: {report.primary.source} ({args.form})")
     print(f"wrote figures, NetCDF datasets, claims.json, claims.md and summary.json to {out}")
 
 

@@ -13,7 +13,6 @@ import numpy as np
 
 import jaxtow as jt
 
-from ..io._atomic import write_file
 from ._config import config_dispatch, read_config as _read_config
 from .tow import load_tow
 
@@ -78,13 +77,10 @@ def build(cfg: dict):
         raise ValueError(
             f"config [tow] vessel: built-in vessels are 'barge_2a' and 'barge_2b', got {vessel!r}"
         )
-    drift = tow_c.get("wave_drift", "near_field")
+    source = jt.presets.drift_source(tow_c.get("wave_drift", "near_field"))
     kw = dict(wind_height=tow_c.get("wind_height"))
-    if isinstance(drift, str) and drift in jt.drift.METHODS:
-        kw["method"] = drift
-    else:
-        kw["qtf"], kw["drift_source"] = jt.presets.drift_source(drift)
-        kw["form"] = tow_c.get("sailing_form", "aranha")
+    kw["qtf"], kw["drift_source"] = source.qtf(), source.describe()
+    kw["form"] = tow_c.get("sailing_form", "aranha")
     if "wind_table" in tow_c:
         kw["wind_table"] = jt.io.read_coefficient_table(tow_c["wind_table"])
     tow = jt.presets.barge2_resistance(vessel.split("_")[1], **kw)
@@ -212,7 +208,7 @@ def cmd_resistance(args):
         route_length_m=route,
         sea_states=study.rows,
     )
-    write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
+    jt.io.write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     print(f"wrote figures, NetCDF datasets and summary.json to {out}")
 
 

@@ -5,15 +5,19 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from ..io._atomic import write_file
+import msgspec
+
+import jaxtow as jt
+
 from ._common import (
     model_options,
     parse_sets,
-    run_time_domain,
     time_domain_options,
+    time_domain_settings,
     tow_model,
     tow_names,
     tow_option,
+    write_time_domain,
 )
 
 
@@ -23,10 +27,18 @@ def cmd_simulate(args):
     summary = {}
     for name in tow_names(args, "simulate"):
         model, vname = tow_model(args, name, parse_sets(args.set), "simulate")
-        summary[vname] = run_time_domain(model, vname, args, out) | dict(
-            assumed_values=dict(model.assumed)
+        try:
+            run = jt.studies.time_domain_run(model, **time_domain_settings(args))
+        except ValueError as e:
+            raise SystemExit(f"jaxtow simulate: error: {e}") from None
+        write_time_domain(model, vname, run, args, out)
+        summary[vname] = dict(
+            msgspec.to_builtins(run.record),
+            n_steps=int(run.simulation.n_steps),
+            validity_share=run.validity_share,
+            assumed_values=dict(model.assumed),
         )
-    write_file(out / "simulate_summary.json", json.dumps(summary, indent=2, default=float))
+    jt.io.write_file(out / "simulate_summary.json", json.dumps(summary, indent=2))
     print(f"wrote figures, runs and simulate_summary.json to {out}")
 
 

@@ -3,15 +3,15 @@ self-contained HTML report."""
 
 from __future__ import annotations
 
-import json
 import re
 import sys
 from pathlib import Path
 
+import msgspec
+
 import jaxtow as jt
 
-from ..io._atomic import write_file
-from ._common import check_ea_newtons, finite_float, positive_float
+from ._common import ea_arguments, ea_option, finite_float, positive_float
 from .tow import load_tow
 
 
@@ -27,26 +27,31 @@ def _tow(args):
     if args.tow_positional and args.tow_flag and args.tow_positional != args.tow_flag:
         raise SystemExit("jaxtow study: error: give the tow once (TOW or --tow TOW)")
     tow = load_tow(args.tow_positional or args.tow_flag or "barge2a", "study")
-    if args.EA is not None:
-        check_ea_newtons(args.EA, "study")
+    ea = ea_option(args, "study")
     changes = {
         key: getattr(args, attr)
         for attr, key in (
             ("l0", "l0"),
             ("length", "length"),
             ("xp", "xp"),
-            ("EA", "EA"),
             ("EA_nd", "EA_nd"),
             ("u_tug", "speed"),
         )
         if getattr(args, attr) is not None
     }
+    if ea is not None:
+        changes["EA_N"] = ea
     if not changes:
         return tow
     try:
         return jt.tow.with_changes(tow, **changes)
     except ValueError as e:
         raise SystemExit(f"jaxtow study: error: {e}") from None
+
+
+def _stem(args) -> str:
+    """The file stem of a study's outputs: the tow's name, made safe for a file name."""
+    return safe_name(_tow(args).name)
 
 
 def cmd_study(args):
@@ -67,74 +72,86 @@ def cmd_study(args):
     options = dict(kw, n_save=2001)
     store = jt.io.StepStore(
         out / f".{stem}_steps",
-        jt.io.study_fingerprint(tow.resolved, options, jt.__version__),
+        jt.io.fingerprint(dict(tow=tow.resolved, options=options, version=jt.__version__)),
         resume=args.resume,
     )
     study = jt.studies.tow_study(tow, progress=not args.quiet, store=store, **kw)
     report = _write(study, out, stem, quiet=args.quiet)
     _print_summary(study.summary, report, out)
-    stopped = study.summary.get("incomplete")
+    stopped = study.summary.incomplete
     if stopped is None:
         store.clear()
         return
     print(
-        f"jaxtow study: the study stopped at the step '{stopped['step']}' ({stopped['error']}); "
-        f"the report of what finished, marked incomplete, is {report}; the finished steps are "
-        f"kept in {store.folder}: run the same command with --resume to continue",
+        f"jaxtow study: the study stopped at the step '{stopped.step}' ({stopped.error}); "
+        f"the report of what finished, marked incomplete, is {report} (a complete report "
+        f"of an earlier run in {out} is left as it was); the finished steps are kept in "
+        f"{store.folder}: run the same command with --resume to continue",
         file=sys.stderr,
     )
-    if stopped["interrupted"]:
+    if stopped.interrupted:
         raise KeyboardInterrupt
     raise SystemExit(1)
 
 
+#: The suffix of an incomplete study's files, so that they never replace a complete study's.
+INCOMPLETE = "_INCOMPLETE"
+
+
 def _write(study, out: Path, stem: str, *, quiet: bool) -> Path:
     """The study's NetCDF, PNG, JSON and HTML files; a figure that fails is named in the
-    summary (``figure_errors``) and the report is written without it."""
+    summary (``figure_errors``) and the report is written without it. An incomplete study
+    writes its files under ``<tow>_INCOMPLETE_*`` and leaves a complete study's alone; a
+    complete one removes the incomplete files of an earlier run."""
     if not quiet:
         print("[report] figures and files ...", file=sys.stderr)
-    for name, ds in study.datasets.items():
-        jt.io.save_dataset(ds, out / f"{stem}_{safe_name(name)}.nc")
+    incomplete = study.summary.incomplete is not None
+    name = stem + (INCOMPLETE if incomplete else "")
+    if not incomplete:
+        for old in out.glob(f"{stem}{INCOMPLETE}_*"):
+            old.unlink()
+    for key, ds in study.datasets.items():
+        jt.io.save_dataset(ds, out / f"{name}_{safe_name(key)}.nc")
     figs, errors = {}, {}
     for k, make in jt.plotting.tow.study_figure_makers(study).items():
         try:
             figs[k] = jt.plotting.tow.png_bytes(make())
         except Exception as e:  # noqa: BLE001 - one figure never costs the report
             errors[k] = f"{type(e).__name__}: {e}"
+    summary = study.summary
     if errors:
-        study.summary["figure_errors"] = errors
+        summary = msgspec.structs.replace(summary, figure_errors=errors)
     for k, b in figs.items():
-        write_file(out / f"{stem}_{safe_name(k)}.png", b)
-    write_file(out / f"{stem}_summary.json", json.dumps(study.summary, indent=2, default=float))
-    report = out / f"{stem}_report.html"
-    write_file(report, jt.reports.tow_report_html(study.summary, figs, version=jt.__version__))
+        jt.io.write_file(out / f"{name}_{safe_name(k)}.png", b)
+    jt.io.write_file(out / f"{name}_summary.json", jt.studies.to_json(summary))
+    report = out / f"{name}_report.html"
+    jt.io.write_file(report, jt.reports.tow_report_html(summary, figs, version=jt.__version__))
     return report
 
 
-def _print_summary(s: dict, report: Path, out: Path) -> None:
-    print(f"{s['tow']}: {s.get('description', '')}")
-    if "calm" in s:
-        print(f"  calm water: {s['calm']['verdict_text']}")
-    for name, r in s.get("sea_states", {}).items():
-        print(f"  sea state {name}: {r['verdict_text']}")
-    for r in s.get("resistance", []):
-        worst = max(r["required_bollard_pull"], r.get("worst_required_bollard_pull", 0.0))
-        sp = r.get("operating_speed") if r["status"] == "successful" else None
+def _print_summary(s, report: Path, out: Path) -> None:
+    print(f"{s.tow}: {s.description}")
+    for c in s.conditions:
+        print(f"  {c.name}: {c.verdict_text}")
+    for r in s.resistance:
+        sp = r.operating_speed if r.status == "successful" else None
         print(
-            f"  {r['sea_state']}: required bollard pull {worst / 9.80665e3:.1f} t (the worst "
-            "over Tp)"
+            f"  {r.sea_state}: required bollard pull {r.required / jt.TONNE_FORCE:.1f} t (the "
+            "worst over Tp)"
             + (
-                f", operating speed {sp:.2f} m/s ({sp / 0.514444:.1f} kn)"
+                f", operating speed {sp:.2f} m/s ({sp / jt.KNOT:.1f} kn)"
                 if sp is not None
-                else f"; {r['message']}"
+                else f"; {r.message}"
             )
         )
     for line in jt.reports.criteria_lines(s):
         print(f"  {line}")
-    for k, why in s.get("skipped", {}).items():
+    for k, why in s.skipped.items():
         print(f"  not assessed: {k} ({why})")
-    for k, why in s.get("figure_errors", {}).items():
+    for k, why in s.figure_errors.items():
         print(f"  figure {k} failed: {why}")
+    if s.assessment is not None:
+        print(f"VERDICT {s.assessment.reason}")
     print(f"wrote {report} (and NetCDF, JSON, PNG) to {out}")
 
 
@@ -154,10 +171,7 @@ def add_parser(sub):
     p.add_argument("--l0", type=positive_float, help="towline length l0' [L] (tow file: l0)")
     p.add_argument("--length", type=positive_float, help="towline length [m] (tow file: length)")
     p.add_argument("--xp", type=finite_float, help="attachment point x_p' [L] (tow file: xp)")
-    p.add_argument("--EA", type=positive_float, help="towline axial stiffness [N] (tow file: EA)")
-    p.add_argument(
-        "--EA-nd", dest="EA_nd", type=positive_float, help="non-dimensional EA' (tow file: EA_nd)"
-    )
+    ea_arguments(p)
     p.add_argument(
         "--u-tug", type=positive_float, help="design tow speed [m/s] (tow file: [tow] speed)"
     )
@@ -184,4 +198,4 @@ def add_parser(sub):
         help="continue a study that failed or was interrupted, from the steps it finished "
         "(kept in OUT/.TOW_steps until the study completes)",
     )
-    p.set_defaults(func=cmd_study)
+    p.set_defaults(func=cmd_study, manifest_name=lambda args: f"{_stem(args)}_run.json")

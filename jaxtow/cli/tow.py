@@ -8,8 +8,6 @@ from pathlib import Path
 
 import jaxtow as jt
 
-from ..io._atomic import write_file
-
 
 def load_tow(spec, command: str):
     """The `jaxtow.tow.Tow` of a built-in name or a file, with a one-line error (and the
@@ -38,7 +36,7 @@ def cmd_new(args):
     out = Path(args.file)
     if out.exists() and not args.force:
         raise SystemExit(f"jaxtow tow new: error: {out} exists (use --force to overwrite)")
-    write_file(out, jt.tow.template())
+    jt.io.write_file(out, jt.tow.template())
     print(f"wrote a commented tow-file template to {out}; check it with: jaxtow tow show {out}")
 
 

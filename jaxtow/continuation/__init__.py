@@ -35,36 +35,28 @@ mode sensitivities (period T and initial state, phase condition ψ(0) = 0), Newt
 range are measured on the converged orbit.
 """
 
-from ._branches import (
-    Branch as Branch,
-    SpecialPoint as SpecialPoint,
-    equilibrium_branch as equilibrium_branch,
-    first_lyapunov_coefficient as first_lyapunov_coefficient,
-    lyapunov_coefficient as lyapunov_coefficient,
-)
-from ._cycles import (
-    PeriodicOrbit as PeriodicOrbit,
-    limit_cycle_branch as limit_cycle_branch,
-    limit_cycle_from_simulation as limit_cycle_from_simulation,
-    periodic_orbit as periodic_orbit,
-)
-from ._hopf import (
-    hopf_curve as hopf_curve,
-    hopf_test as hopf_test,
-    straight_behind_hopf as straight_behind_hopf,
-)
+from typing import TYPE_CHECKING
 
-__all__ = [
-    "Branch",
-    "SpecialPoint",
-    "equilibrium_branch",
-    "first_lyapunov_coefficient",
-    "lyapunov_coefficient",
-    "PeriodicOrbit",
-    "limit_cycle_branch",
-    "limit_cycle_from_simulation",
-    "periodic_orbit",
-    "hopf_curve",
-    "hopf_test",
-    "straight_behind_hopf",
-]
+from .._lazy import attach as _attach
+
+if TYPE_CHECKING:
+    from ._branches import (
+        Branch as Branch,
+        SpecialPoint as SpecialPoint,
+        equilibrium_branch as equilibrium_branch,
+        first_lyapunov_coefficient as first_lyapunov_coefficient,
+        lyapunov_coefficient as lyapunov_coefficient,
+    )
+    from ._cycles import (
+        PeriodicOrbit as PeriodicOrbit,
+        limit_cycle_branch as limit_cycle_branch,
+        limit_cycle_from_simulation as limit_cycle_from_simulation,
+        periodic_orbit as periodic_orbit,
+    )
+    from ._hopf import (
+        hopf_curve as hopf_curve,
+        hopf_test as hopf_test,
+        straight_behind_hopf as straight_behind_hopf,
+    )
+
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

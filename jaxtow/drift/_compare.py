@@ -19,7 +19,7 @@ import numpy as np
 
 from .._rules import guard
 from ..waves import DEFAULT_OMEGA, Jonswap, mean_drift
-from ._methods import METHODS, ZONE_EDGES, ZONE_NAMES, zone
+from ._methods import WATERLINE_METHODS, ZONE_EDGES, ZONE_NAMES, zone
 from ._qtf import QTF
 
 
@@ -52,26 +52,26 @@ def relative_mse_by_zone(estimate, base, omega, length, edges=ZONE_EDGES) -> dic
 def compare_methods(wl, omega, beta, u=0.0, v=0.0, *, methods=None, options=None) -> dict:
     """Run waterline methods on one ω grid at heading β and speed (u, v).
 
-    ``methods``: names from `METHODS` (default all); ``options``: {name: kwargs} (e.g.
+    ``methods``: names from `WATERLINE_METHODS` (default all); ``options``: {name: kwargs} (e.g.
     ``{"faltinsen": {"speed_factor": (4.0, 2.0)}}``). Returns {name: DriftEstimate} with
     arrays over ω."""
-    methods = list(METHODS) if methods is None else list(methods)
+    methods = list(WATERLINE_METHODS) if methods is None else list(methods)
     options = options or {}
     omega = jnp.asarray(omega, float)
     out = {}
     for name in methods:
-        if name not in METHODS:
+        if name not in WATERLINE_METHODS:
             raise ValueError(
-                f"parameter 'methods': unknown method {name!r}; choose from {sorted(METHODS)}"
+                f"parameter 'methods': unknown method {name!r}; choose from {sorted(WATERLINE_METHODS)}"
             )
-        out[name] = METHODS[name](wl, omega, beta, u, v, **options.get(name, {}))
+        out[name] = WATERLINE_METHODS[name](wl, omega, beta, u, v, **options.get(name, {}))
     return out
 
 
 def irregular_drift(method, wl, hs, tp, beta, u=0.0, v=0.0, *, omega=None, gamma=3.3, **kwargs):
     """Mean drift (Fx, Fy, Nz) [N, N, N·m] of a waterline method in a JONSWAP sea (Hs, Tp, γ):
     F̄ = 2∫ S(ω) F(ω) dω (eq. 2.29) on the grid ``omega`` (default `jaxtow.waves.DEFAULT_OMEGA`). Differentiable and vmappable in hs, tp, beta, u, v; ``method`` is a function
-    from `METHODS` or its name."""
+    from `WATERLINE_METHODS` or its name."""
     w = jnp.asarray(DEFAULT_OMEGA if omega is None else omega, float)
     sea = Jonswap(hs=hs, tp=tp, gamma=gamma)  # checks concrete values
     # traced ones are checked on the result, with the same rules
@@ -79,16 +79,16 @@ def irregular_drift(method, wl, hs, tp, beta, u=0.0, v=0.0, *, omega=None, gamma
 
 
 def method_function(method):
-    """The waterline method ``method`` (a function of `METHODS` or its name); a name that is
+    """The waterline method ``method`` (a function of `WATERLINE_METHODS` or its name); a name that is
     not one is an error that lists them."""
     if not isinstance(method, str):
         return method
-    if method not in METHODS:
+    if method not in WATERLINE_METHODS:
         raise ValueError(
             f"parameter 'method': {method!r} is not a waterline drift method; choose from "
-            f"{', '.join(METHODS)}"
+            f"{', '.join(WATERLINE_METHODS)}"
         )
-    return METHODS[method]
+    return WATERLINE_METHODS[method]
 
 
 def method_mean_drift(method, wl, omega, S, beta, u=0.0, v=0.0, **kwargs):
@@ -100,7 +100,7 @@ def method_mean_drift(method, wl, omega, S, beta, u=0.0, v=0.0, **kwargs):
 
 def qtf_from_method(method, wl, omega, beta, **kwargs):
     """A stationary mean-drift `QTF` tabulated from a waterline method (``method``: a function
-    of `METHODS` or its name) on ``omega`` [rad/s] × ``beta`` [rad, 0 … π, ascending from 0]
+    of `WATERLINE_METHODS` or its name) on ``omega`` [rad/s] × ``beta`` [rad, 0 … π, ascending from 0]
     for a port-starboard symmetric waterline, completed to ±β by symmetry. A documented
     stand-in for a panel-method QTF in the tow model (the waterline methods miss the
     motion-induced drift in the motion zone); the forward-speed effect then comes from the

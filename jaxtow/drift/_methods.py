@@ -413,7 +413,7 @@ def r_function_method(
 
 
 #: The waterline methods by name (the R-function method needs a motion part and is not here).
-METHODS = {
+WATERLINE_METHODS = {
     "faltinsen": faltinsen,
     "liu": liu,
     "fujii_takahashi": fujii_takahashi,

@@ -9,26 +9,23 @@ them through ``TowModel(external=...)``; a new force (a drogue, a current profil
 subclass with a ``__call__`` (see ``docs/howto/new-force.md`` and notebook 04).
 """
 
-from ._base import (
-    AbstractExternalForce as AbstractExternalForce,
-    CombinedForce as CombinedForce,
-    ConstantBodyForce as ConstantBodyForce,
-    NoExternalForce as NoExternalForce,
-)
-from ._waves import (
-    IrregularWaveDriftForce as IrregularWaveDriftForce,
-    SlowDriftForce as SlowDriftForce,
-    WaveDriftForce as WaveDriftForce,
-)
-from ._wind import WindForce as WindForce
+from typing import TYPE_CHECKING
 
-__all__ = [
-    "AbstractExternalForce",
-    "CombinedForce",
-    "ConstantBodyForce",
-    "NoExternalForce",
-    "IrregularWaveDriftForce",
-    "SlowDriftForce",
-    "WaveDriftForce",
-    "WindForce",
-]
+from .._lazy import attach as _attach
+
+if TYPE_CHECKING:
+    from ._base import (
+        AbstractExternalForce as AbstractExternalForce,
+        CombinedForce as CombinedForce,
+        ConstantBodyForce as ConstantBodyForce,
+        NoExternalForce as NoExternalForce,
+    )
+    from ._current import CurrentForce as CurrentForce
+    from ._waves import (
+        IrregularWaveDriftForce as IrregularWaveDriftForce,
+        SlowDriftForce as SlowDriftForce,
+        WaveDriftForce as WaveDriftForce,
+    )
+    from ._wind import WindForce as WindForce
+
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

@@ -11,7 +11,7 @@ import numpy as np
 from jaxtyping import Array, Float
 
 from .._interp import cell_index
-from .._rules import NONNEGATIVE, POSITIVE, check_type, rule_field
+from .._rules import FINITE, NONNEGATIVE, POSITIVE, check_type, rule_field
 from .._units import G, Scales
 from ..drift._damping import encounter_frequency, sailing_validity
 from ..drift._methods import FROUDE_MAX
@@ -96,10 +96,11 @@ class WaveDriftForce(AbstractExternalForce):
 
 
 class IrregularWaveDriftForce(AbstractExternalForce):
-    """Mean drift in an irregular head sea (a `jaxtow.waves` spectrum, e.g. Jonswap(Hs, Tp))
-    on the towed vessel: 2 ∫ S(ω) F_sail(ω, β = −ψ; u, v, r) dω, non-dimensional and with
-    ``form`` and ``yaw_rate`` as in `WaveDriftForce`. ``omega``: the integration grid [rad/s]
-    (check it with `jaxtow.waves.check_frequency_grid`)."""
+    """Mean drift in an irregular sea (a `jaxtow.waves` spectrum, e.g. Jonswap(Hs, Tp)) on
+    the towed vessel: 2 ∫ S(ω) F_sail(ω, β = α − ψ; u, v, r) dω, non-dimensional and with
+    ``form`` and ``yaw_rate`` as in `WaveDriftForce`; the waves come from ``angle`` α [rad]
+    relative to the tug's course (0: head seas, the thesis's case). ``omega``: the
+    integration grid [rad/s] (check it with `jaxtow.waves.check_frequency_grid`)."""
 
     qtf: QTF
     spectrum: AbstractSpectrum
@@ -107,13 +108,13 @@ class IrregularWaveDriftForce(AbstractExternalForce):
     scales: Scales
     form: str = eqx.field(static=True, default="aranha")
     yaw_rate: bool = eqx.field(static=True, default=True)
+    angle: jnp.ndarray = rule_field(rule=FINITE, default=0.0)
     steady = _steady
 
     def __check_init__(self):
         check_form(self.form)
         check_type("qtf", self.qtf, QTF)
         check_type("scales", self.scales, Scales)
-
         check_ascending(self.omega)
 
     def dimensional(self, y):
@@ -122,7 +123,7 @@ class IrregularWaveDriftForce(AbstractExternalForce):
             self.qtf,
             self.omega,
             self.spectrum.density(self.omega),
-            -y[5],
+            self.angle - y[5],
             y[0] * U,
             y[1] * U,
             y[2] * U / L,
@@ -146,16 +147,17 @@ class IrregularWaveDriftForce(AbstractExternalForce):
         sep = U / jnp.maximum(wp * 0.5 * self.spectrum.hs, 1e-300)
         out.update(separation_ratio=sep, no_separation=sep < 1.0)
         u, v = y[0] * sc.u_tug, y[1] * sc.u_tug
-        peak = sailing_validity(wp, -y[5], u, v)
+        beta = self.angle - y[5]
+        peak = sailing_validity(wp, beta, u, v)
         S = self.spectrum.density(self.omega)
-        overtaken = encounter_frequency(self.omega, -y[5], u, v) <= 0
+        overtaken = encounter_frequency(self.omega, beta, u, v) <= 0
         m0 = spectral_integral(self.omega, S, jnp.ones_like(S))
         out.update(
             tau=peak["tau"],
             tau_ok=peak["tau_ok"],
             encounter_positive=~jnp.any(overtaken & (S > 1e-3 * jnp.max(S))),
             overtaken_energy=spectral_integral(self.omega, S, overtaken.astype(S.dtype)) / m0,
-            heading_in_table=self.qtf.in_table(-y[5]),
+            heading_in_table=self.qtf.in_table(beta),
             yaw_rate_damping=jnp.asarray(self.qtf.has_sectional and self.yaw_rate),
         )
         return out

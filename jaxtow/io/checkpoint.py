@@ -9,30 +9,22 @@ renamed into place). A folder made by another sweep is refused, never mixed in.
 
 from __future__ import annotations
 
-import hashlib
 import json
 from pathlib import Path
 
-import jax
 import numpy as np
 
 from ._atomic import atomic_path
+from ._fingerprint import Fingerprint
 
 
-def fingerprint(model, names, axes, chunk: int, options: dict) -> str:
-    """SHA-256 of everything a sweep's results depend on: the model's array values and its
-    structure, the grid, the chunk size and the kernel options."""
-    h = hashlib.sha256()
-    leaves, treedef = jax.tree_util.tree_flatten(model)
-    h.update(str(treedef).encode())
-    for leaf in leaves:
-        a = np.asarray(leaf)
-        h.update(str(a.dtype).encode() + str(a.shape).encode() + a.tobytes())
+def sweep_fingerprint(model, names, axes, chunk: int, options: dict) -> str:
+    """The `Fingerprint` of everything a sweep's results depend on: the model's array values
+    and its structure, the grid, the chunk size and the kernel options."""
+    f = Fingerprint().tree(model)
     for n, a in zip(names, axes):
-        h.update(n.encode() + np.asarray(a, float).tobytes())
-    h.update(str(chunk).encode())
-    h.update(json.dumps(options, sort_keys=True, default=str).encode())
-    return h.hexdigest()
+        f.raw(n.encode() + np.asarray(a, float).tobytes())
+    return f.value([chunk, options]).hexdigest()
 
 
 class ChunkStore:
@@ -80,4 +72,6 @@ class Checkpoint:
         self.folder = folder
 
     def open(self, model, names, axes, chunk: int, options: dict, nchunks: int) -> ChunkStore:
-        return ChunkStore(self.folder, fingerprint(model, names, axes, chunk, options), nchunks)
+        return ChunkStore(
+            self.folder, sweep_fingerprint(model, names, axes, chunk, options), nchunks
+        )

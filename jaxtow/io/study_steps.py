@@ -1,8 +1,8 @@
 """The finished steps of a study, one file a step, so that a study that fails or is killed
 loses nothing and ``jaxtow study --resume`` continues where it stopped.
 
-The folder holds ``manifest.json`` (a fingerprint of the tow file's resolved values, the
-study's options and the jaxtow version) and one ``<step>.pickle`` a finished step, each
+The folder holds ``manifest.json`` (the `jaxtow.io.fingerprint` of the tow file's resolved
+values, the study's options and the jaxtow version) and one ``<step>.pickle`` a finished step, each
 written atomically (a temporary name renamed into place), so a step killed while writing
 leaves no file. The step files are pickles of the step's own results (numbers, arrays,
 xarray datasets): they are the study's cache in its own output folder, read back only by
@@ -12,7 +12,6 @@ tow or other options is refused, never mixed in.
 
 from __future__ import annotations
 
-import hashlib
 import json
 import pickle
 import re
@@ -20,21 +19,13 @@ import shutil
 from pathlib import Path
 
 from ._atomic import atomic_path
+from ._fingerprint import fingerprint
 
-__all__ = ["StepStore", "study_fingerprint"]
-
-
-def study_fingerprint(resolved: dict, options: dict, version: str) -> str:
-    """SHA-256 of what a study's results depend on: the tow's resolved values (every
-    default filled in), the study's options and the jaxtow version."""
-    text = json.dumps(
-        dict(tow=resolved, options=options, version=version), sort_keys=True, default=repr
-    )
-    return hashlib.sha256(text.encode()).hexdigest()
+__all__ = ["StepStore"]
 
 
 def _file_key(key: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", key) + "-" + hashlib.sha1(key.encode()).hexdigest()[:8]
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", key) + "-" + fingerprint(key)[:8]
 
 
 class StepStore:

@@ -23,10 +23,16 @@ def read_waterline(
     line). ``#`` starts a comment.
     """
     rows = []
-    for line in Path(path).read_text().splitlines():
+    for n, line in enumerate(Path(path).read_text().splitlines(), 1):
         line = line.split("#", 1)[0].strip()
         if line:
-            rows.append([float(v) for v in line.split()])
+            try:
+                rows.append([float(v) for v in line.split()])
+            except ValueError:
+                raise ValueError(
+                    f"waterline file {path}, line {n}: expected numbers (x y [flare_deg "
+                    f"[local_draft]]), got {line!r}"
+                ) from None
     if len(rows) < 2:
         raise ValueError(f"waterline file {path}: needs at least two vertices")
     width = max(len(r) for r in rows)

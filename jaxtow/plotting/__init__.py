@@ -27,11 +27,5 @@ if TYPE_CHECKING:
         plot_stability_map as plot_stability_map,
     )
 
-__all__ = [
-    "save",
-    "plot_equilibria_vs",
-    "plot_max_real_vs",
-    "plot_stability_map",
-]
 
-__getattr__, __dir__ = _attach(__name__, __file__)
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

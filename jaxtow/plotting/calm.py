@@ -63,25 +63,32 @@ def plot_max_real_vs(ds, param: str, ax=None, title: str | None = None):
     return ax
 
 
-def plot_stability_map(ds, x: str, y: str, branch: int = 0, ax=None, title: str | None = None):
+#: The dimensional axis labels of the map's length parameters (`plot_stability_map`).
+_METRES = {"xp": "attachment ahead of the CoG [m]", "l0": "towline length [m]"}
+
+
+def plot_stability_map(
+    ds, x: str, y: str, branch: int = 0, ax=None, title: str | None = None, length=None
+):
     """max Re λ of one branch over a 2-D parameter grid, with the stability boundary;
     cross-hatched where the branch's equilibrium is outside the physics' validity (the
-    dataset's ``physics_valid``, present for sweeps with validity flags)."""
+    dataset's ``physics_valid``, present for sweeps with validity flags). With the ship's
+    ``length`` [m], the length parameters (x_p', l0') are drawn in metres."""
     ax = ax or plt.subplots(figsize=(6, 4.5))[1]
     on = ds["valid"] & (ds["branch"] == branch)
     mr = ds["max_real"].where(on).max("equilibrium")
     mr = mr.transpose(y, x).values
     lim = np.nanmax(np.abs(mr)) if np.isfinite(mr).any() else 1.0
-    pc = ax.pcolormesh(
-        ds[x].values, ds[y].values, mr, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="auto"
-    )
+    scale = {k: (length if length is not None and k in _METRES else 1.0) for k in (x, y)}
+    xs, ys = ds[x].values * scale[x], ds[y].values * scale[y]
+    pc = ax.pcolormesh(xs, ys, mr, cmap="RdBu_r", vmin=-lim, vmax=lim, shading="auto")
     if np.isfinite(mr).any() and np.nanmin(mr) < 0 < np.nanmax(mr):
-        ax.contour(ds[x].values, ds[y].values, mr, levels=[0.0], colors="k", linewidths=1)
-    plt.colorbar(pc, ax=ax, label="max Re(lambda) [-]")
+        ax.contour(xs, ys, mr, levels=[0.0], colors="k", linewidths=1)
+    plt.colorbar(pc, ax=ax, label="max Re(lambda) [-] (by U/L)")
     if "physics_valid" in ds:
         bad = (on & ~ds["physics_valid"].astype(bool)).any("equilibrium")
-        hatch_invalid(ax, ds[x].values, ds[y].values, bad.transpose(x, y).values)
-    ax.set_xlabel(f"{x}' [-]")
-    ax.set_ylabel(f"{y}' [-]")
+        hatch_invalid(ax, xs, ys, bad.transpose(x, y).values)
+    ax.set_xlabel(_METRES[x] if scale[x] != 1.0 else f"{x}' [-]")
+    ax.set_ylabel(_METRES[y] if scale[y] != 1.0 else f"{y}' [-]")
     ax.set_title(title or f"{ds.attrs.get('vessel', '')}: {BRANCH_STYLE[branch][0]}", fontsize=9)
     return ax

@@ -5,7 +5,7 @@ from __future__ import annotations
 import matplotlib.pyplot as plt
 import numpy as np
 
-COLOURS = {"current": "tab:blue", "wind": "tab:green", "waves": "tab:red", "tug": "tab:purple"}
+COLOURS = {"hull": "tab:blue", "wind": "tab:green", "waves": "tab:red", "tug": "tab:purple"}
 
 
 def _components(ds):

@@ -9,6 +9,7 @@ import textwrap
 import matplotlib.pyplot as plt
 import numpy as np
 
+from .._units import RHO_SEA, G
 from .calm import plot_stability_map
 from .resistance import plot_operating_point
 from .timedomain import plot_time_traces
@@ -24,22 +25,22 @@ def study_figure_makers(study) -> dict:
     incomplete study has fewer); the command line draws them one by one, so a figure that
     fails costs only itself."""
     s, makers = study.summary, {}
-    if "head_sea_fx" in study.drift_curves:
-        makers["drift"] = lambda: _drift_figure(s, *study.drift_curves["head_sea_fx"])
+    if study.drift_curve is not None:
+        makers["drift"] = lambda: _drift_figure(s, *study.drift_curve)
     for name, b in study.budgets.items():
         makers[f"operating_point_{name}"] = lambda name=name, b=b: _operating_point(s, name, b)
-    if "map_xp_l0" in study.datasets:
+    if "map_xp_l0" in study.datasets and s.map is not None:
         makers["map"] = lambda: _map_figure(s, study.datasets["map_xp_l0"])
-    if "calm" in study.runs:
+    if "calm" in study.runs and s.time_domain is not None:
         makers["time_domain"] = lambda: _time_domain_figure(s, *study.runs["calm"])
     return makers
 
 
-def _drift_figure(s: dict, w, fx):
+def _drift_figure(s, w, fx):
     fig, ax = plt.subplots(figsize=(6.5, 4))
     ax.plot(w, np.asarray(fx) / 1e3, color="tab:blue", label="F_x / zeta_a^2, head seas")
     ax.axhline(
-        -0.5 * 1025.0 * 9.80665 * s["breadth"] / 1e3,
+        -0.5 * RHO_SEA * G * s.breadth / 1e3,
         color="0.5",
         ls="--",
         lw=1,
@@ -47,33 +48,39 @@ def _drift_figure(s: dict, w, fx):
     )
     ax.set_xlabel("wave frequency omega [rad/s]")
     ax.set_ylabel("mean drift [kN/m^2]")
-    ax.set_title("\n".join(textwrap.wrap(f"{s['tow']}: {s['drift_source']}", 90)[:3]), fontsize=8)
+    ax.set_title("\n".join(textwrap.wrap(f"{s.tow}: {s.drift_source}", 90)[:3]), fontsize=8)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     return fig
 
 
-def _operating_point(s: dict, name: str, b: dict):
-    row = next(r for r in s["resistance"] if r["sea_state"] == name)
-    pt = (row["operating_speed"], row["pull"]) if "operating_speed" in row else None
+def _operating_point(s, name: str, b):
+    row = next(r for r in s.resistance if r.sea_state == name)
+    pt = None
+    if row.operating_speed is not None and row.available_pull is not None:
+        pt = (row.operating_speed, float(np.interp(row.operating_speed, b.speeds, b.pull)))
     ax = plot_operating_point(
-        b["speeds"],
-        b["pull"],
-        {"total": b["total"]},
+        b.speeds,
+        b.pull,
+        {"total": b.total},
         pt,
-        title=f"{s['tow']}: sea state {name} (Hs {row['hs']:g} m, Tp {row['tp']:g} s)",
+        title=f"{s.tow}: sea state {name} (Hs {row.hs:g} m, Tp {row.tp:g} s)",
     )
     return ax.figure
 
 
-def _map_figure(s: dict, ds):
+def _map_figure(s, ds):
+    m = s.map
     ax = plot_stability_map(
-        ds, "xp", "l0", title=f"{s['tow']}: straight-behind max Re(lambda), calm water"
+        ds,
+        "xp",
+        "l0",
+        title=f"{s.tow}: straight-behind max Re(lambda), calm water",
+        length=m.length,
     )
-    t = s["towline"]
     ax.plot(
-        [t["xp"]],
-        [t["l0"]],
+        [m.design_xp * m.length],
+        [m.design_l0 * m.length],
         marker="*",
         ms=14,
         color="gold",
@@ -85,13 +92,14 @@ def _map_figure(s: dict, ds):
     return ax.figure
 
 
-def _time_domain_figure(s: dict, traj, met):
+def _time_domain_figure(s, traj, met):
+    t = s.time_domain
     return plot_time_traces(
         traj,
-        f"{s['tow']}: calm water from heading {s['time_domain']['psi0_deg']:g} deg and sway "
-        f"offset {s['time_domain']['y0'] * s['length']:.1f} m ({met['outcome']})",
-        length=s["length"],
-        time_scale=s["time_scale"],
+        f"{s.tow}: calm water from heading {t.psi0_deg:g} deg and sway "
+        f"offset {t.y0 * s.length:.1f} m ({met.outcome})",
+        length=s.length,
+        time_scale=s.time_scale,
     )
 
 

@@ -91,8 +91,8 @@ def plot_runs(runs: dict, title=""):
     fig, axes = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True)
     for tag, (model, sim) in runs.items():
         tr = trajectory(model, sim)
-        axes[0].plot(tr["t"], tr["sway_offset"], lw=0.8, label=tag)
-        axes[1].plot(tr["t"], np.degrees(tr["psi"]), lw=0.8, label=tag)
+        axes[0].plot(tr.t, tr.sway_offset, lw=0.8, label=tag)
+        axes[1].plot(tr.t, np.degrees(tr.psi), lw=0.8, label=tag)
     axes[0].set_ylabel("sway offset y' [L]")
     axes[1].set_ylabel("psi [deg]")
     axes[1].set_xlabel("t' [-]")

@@ -38,8 +38,8 @@ these presets carries the list in ``Vessel.assumed`` and every dataset in its at
 Modules: `_values` (re-exports `jaxtow._values`: the thesis's Barge 2 data and every documented estimate, `ASSUMPTIONS`),
 `_particulars` (a vessel from L, B, T, C_B by published regressions, and its skegs), `_barge2` (the
 built-in vessels, waterlines, towline, resistance model, sea states and tug),
-`_databases` (the shipped panel-method drift databases and `drift_source`, the one way to
-name a drift source), `_tows` (the Barge 2 tow models of the thesis's wave studies).
+`_databases` (the shipped panel-method drift databases), `_sources` (the typed drift
+sources and `drift_source`, the one way to name one), `_tows` (the Barge 2 tow models of the thesis's wave studies).
 """
 
 from typing import TYPE_CHECKING
@@ -68,7 +68,6 @@ if TYPE_CHECKING:
         DATABASE_METHODS as DATABASE_METHODS,
         DATABASES as DATABASES,
         DEFAULT_METHOD as DEFAULT_METHOD,
-        FILE_OPTIONS as FILE_OPTIONS,
         QTF_BETA_DEG as QTF_BETA_DEG,
         QTF_OMEGA as QTF_OMEGA,
         STANDIN as STANDIN,
@@ -77,12 +76,13 @@ if TYPE_CHECKING:
         database_attrs as database_attrs,
         database_file as database_file,
         describe_database as describe_database,
-        describe_file as describe_file,
-        drift_source as drift_source,
     )
     from ._particulars import (
         CLARKE_LB_RANGE as CLARKE_LB_RANGE,
         REGRESSIONS as REGRESSIONS,
+        AddedMasses as AddedMasses,
+        LinearDerivatives as LinearDerivatives,
+        SkegDerivatives as SkegDerivatives,
         Skegs as Skegs,
         block_coefficient_from_mass as block_coefficient_from_mass,
         clarke_added_mass as clarke_added_mass,
@@ -90,9 +90,20 @@ if TYPE_CHECKING:
         helmbold_lift_slope as helmbold_lift_slope,
         kijima_linear_derivatives as kijima_linear_derivatives,
         particulars_derivatives as particulars_derivatives,
-        radii_of_gyration as radii_of_gyration,
         skeg_derivatives as skeg_derivatives,
         vessel_from_particulars as vessel_from_particulars,
+    )
+    from ._sources import (
+        FILE_OPTIONS as FILE_OPTIONS,
+        AbstractDriftSource as AbstractDriftSource,
+        DatabaseSource as DatabaseSource,
+        FileSource as FileSource,
+        GivenQTF as GivenQTF,
+        StandInSource as StandInSource,
+        StripSource as StripSource,
+        WaterlineSource as WaterlineSource,
+        describe_file as describe_file,
+        drift_source as drift_source,
     )
     from ._tows import (
         barge2_irregular_model as barge2_irregular_model,
@@ -109,58 +120,5 @@ if TYPE_CHECKING:
         U_TUG_DEFAULT as U_TUG_DEFAULT,
     )
 
-__all__ = [
-    "BARGE2_LENGTH",
-    "BARGE2_BREADTH",
-    "U_TUG_DEFAULT",
-    "ASSUMPTIONS",
-    "PLAUSIBLE_RANGES",
-    "BARGE2_WIND_TABLE",
-    "SEA_STATES",
-    "ILLUSTRATIVE_TUG",
-    "block_coefficient_from_mass",
-    "clarke_added_mass",
-    "CLARKE_LB_RANGE",
-    "clarke_linear_derivatives",
-    "kijima_linear_derivatives",
-    "REGRESSIONS",
-    "particulars_derivatives",
-    "vessel_from_particulars",
-    "Skegs",
-    "skeg_derivatives",
-    "helmbold_lift_slope",
-    "radii_of_gyration",
-    "barge2_scales",
-    "barge2_rake",
-    "box_waterline",
-    "barge2_waterline",
-    "barge2_hull",
-    "barge_2a",
-    "barge_2b",
-    "VESSELS",
-    "steel_wire_EA_nd",
-    "default_towline",
-    "barge2_wind_table",
-    "barge2_resistance",
-    "sea_state",
-    "illustrative_tug",
-    "DATABASES",
-    "DATABASE_METHODS",
-    "DEFAULT_METHOD",
-    "STANDIN",
-    "QTF_OMEGA",
-    "QTF_BETA_DEG",
-    "APPROXIMATE_QTF",
-    "approximate_qtf",
-    "database_file",
-    "database",
-    "database_attrs",
-    "describe_database",
-    "drift_source",
-    "describe_file",
-    "FILE_OPTIONS",
-    "barge2_wave_model",
-    "barge2_irregular_model",
-]
 
-__getattr__, __dir__ = _attach(__name__, __file__)
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

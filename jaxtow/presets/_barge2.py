@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 from .._towline import Towline
-from .._units import Scales
+from .._units import TONNE_FORCE, Scales
 from .._values import (
     _TABLE_3_7,
     ASSUMPTIONS,
@@ -87,7 +87,9 @@ def _barge2(version: str, draft: float | None) -> Vessel:
         ("a66", ASSUMPTIONS["a22,a66"]["note"]),
     )
     skeg = "without skegs, course unstable" if version == "2a" else "with skegs, course stable"
-    return Vessel(**table, **added, name=f"barge_{version} ({skeg})", assumed=assumed)
+    return Vessel(
+        **table, **added.as_parameters(), name=f"barge_{version} ({skeg})", assumed=assumed
+    )
 
 
 def barge_2a(draft: float | None = None) -> Vessel:
@@ -204,4 +206,6 @@ def sea_state(name: str, **overrides) -> SeaState:
 
 def illustrative_tug(**overrides) -> Tug:
     """The ILLUSTRATIVE 40 t tug of the examples (`ILLUSTRATIVE_TUG`)."""
-    return Tug(**{**ILLUSTRATIVE_TUG, **overrides})
+    kw = dict(ILLUSTRATIVE_TUG)
+    kw["bollard_pull"] = kw.pop("bollard_pull_t") * TONNE_FORCE
+    return Tug(**{**kw, **overrides})

@@ -1,5 +1,5 @@
-"""The panel-method drift databases that ship with jaxtow, and the one way to name a drift
-source (`drift_source`).
+"""The panel-method drift databases that ship with jaxtow (the drift sources that name them are
+in `jaxtow.presets._sources`).
 
 Barge 1 (the 76.2 × 24.4 × 5 m box) and Barge 2 (the raked barge) were solved with
 ``jaxtow bem`` (Capytaine, docs/bem.md) at the mesh chosen by the stability-verdict mesh study
@@ -14,17 +14,14 @@ mesh-sensitive of the three).
 from __future__ import annotations
 
 import json
-from collections.abc import Mapping
 from functools import cache
 from importlib import resources
-from os import PathLike
-from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
 from ..drift import QTF, qtf_from_method
-from ..io import load_qtf, read_qtf
+from ..io import load_qtf
 from ._barge2 import barge2_waterline
 
 #: The shipped hulls and the two drift methods of each.
@@ -103,82 +100,3 @@ def describe_database(name: str = "barge2", method: str = DEFAULT_METHOD) -> str
         f"shipped {name} {label} panel QTF (jaxtow bem, Capytaine {a.get('capytaine_version', '?')}, "
         f"{a.get('panel_size_m', '?')} m panels, {a.get('n_panels', '?')} hull panels)"
     )
-
-
-def drift_source(spec=None, *, hull: str = "barge2"):
-    """(QTF, description) for a drift-source spec, the one way every study and command names
-    its drift forces:
-
-    * None or ``"near_field"`` / ``"far_field"``: the shipped database of ``hull`` by that
-      method (None: `DEFAULT_METHOD`);
-    * ``"barge1:far_field"`` etc.: a shipped database by hull and method;
-    * ``"standin"``: the documented stand-in (Kashiwagi waterline QTF of Barge 2,
-      `approximate_qtf`);
-    * a `QTF`: used as given ("user QTF");
-    * any other string: a drift file (`jaxtow.io.read_qtf`: jaxtow .nc/.csv, a Capytaine
-      drift NetCDF, WAMIT .8/.9) read with the default options;
-    * a mapping {"file": PATH, **options}: the same file with the reader's options (ULEN,
-      ρ, g, reference_point, symmetry, symmetry_tol, moment_set; `jaxtow.io.read_drift_file`).
-
-    The description of a file says how it was read (its format, ULEN/ρ/g and where they came
-    from, the yaw moment's reference point, the symmetry completion)."""
-    if isinstance(spec, QTF):
-        return spec, "user QTF"
-    if spec is None:
-        spec = DEFAULT_METHOD
-    if isinstance(spec, Mapping):
-        opts = dict(spec)
-        path = opts.pop("file", None)
-        if not isinstance(path, (str, PathLike)):
-            raise ValueError(
-                f"parameter 'spec': a drift-file mapping needs 'file' = PATH, got {sorted(spec)}"
-            )
-        return _from_file(str(path), opts)
-    if not isinstance(spec, str):
-        raise TypeError(
-            f"parameter 'spec': a name, a path, a {{'file': ...}} mapping or a QTF, got "
-            f"{type(spec).__name__}"
-        )
-    if spec == STANDIN:
-        return approximate_qtf(), APPROXIMATE_QTF
-    name, _, method = spec.rpartition(":") if ":" in spec else (hull, "", spec)
-    if name in DATABASES and method in DATABASE_METHODS:
-        return database(name, method), describe_database(name, method)
-    if spec in DATABASES:
-        return database(spec, DEFAULT_METHOD), describe_database(spec, DEFAULT_METHOD)
-    if not Path(spec).exists():
-        raise ValueError(
-            f"drift source {spec!r}: not a shipped database ({', '.join(DATABASE_METHODS)}, "
-            f"'hull:method' with hull in {DATABASES}), not {STANDIN!r} and no such file"
-        )
-    return _from_file(spec, {})
-
-
-def describe_file(info: dict) -> str:
-    """One line saying how a drift file was read (from a reader's ``info``)."""
-    parts = [info.get("format", "drift file")]
-    for k in ("ulen", "rho", "g"):
-        if k in info:
-            v, where = info[k]
-            parts.append(f"{k} = {v:g} ({where})")
-    if "reference_point" in info:
-        ref, note = info["reference_point"]
-        parts.append(f"yaw about {note}")
-    if "symmetry" in info:
-        parts.append(str(info["symmetry"]))
-    if info.get("moment_set", 6) != 6:
-        parts.append(f"moment set I = {info['moment_set']}")
-    return f"QTF file {info['file']} (" + "; ".join(parts) + ")"
-
-
-#: The options of a drift-file spec (`drift_source`), those of `jaxtow.io.read_drift_file`.
-FILE_OPTIONS = ("ulen", "rho", "g", "symmetry", "symmetry_tol", "reference_point", "moment_set")
-
-
-def _from_file(path: str, options: dict):
-    bad = sorted(set(options) - set(FILE_OPTIONS) - {"length"})
-    if bad:
-        raise ValueError(f"drift file {path}: unknown options {bad}; choose from {FILE_OPTIONS}")
-
-    q, info = read_qtf(path, **options)
-    return q, describe_file(info)

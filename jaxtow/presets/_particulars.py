@@ -17,9 +17,39 @@ def block_coefficient_from_mass(m_nd: float, length: float, breadth: float) -> f
     return m_nd * length / (2.0 * breadth)
 
 
+@dataclass(frozen=True)
+class AddedMasses:
+    """Added masses a11', a22' (by ½ρTL²) and a66' (by ½ρTL⁴) of `jaxtow.Vessel`."""
+
+    a11: float
+    a22: float
+    a66: float
+
+    def as_parameters(self) -> dict:
+        """{name: value}, to build a `jaxtow.Vessel` with."""
+        return dict(a11=self.a11, a22=self.a22, a66=self.a66)
+
+
+@dataclass(frozen=True)
+class LinearDerivatives:
+    """The linear sway and yaw derivatives Y_v', Y_r', N_v', N_r' of a regression, in the
+    Hong et al. scales of `jaxtow.Vessel`; ``lb_in_range``: L/B inside the regression's
+    range (None where the regression states none)."""
+
+    Yv: float
+    Yr: float
+    Nv: float
+    Nr: float
+    lb_in_range: bool | None = None
+
+    def as_parameters(self) -> dict:
+        """{name: value} of the four derivatives."""
+        return dict(Yv=self.Yv, Yr=self.Yr, Nv=self.Nv, Nr=self.Nr)
+
+
 def clarke_added_mass(
     m_nd: float, length: float, breadth: float, draft: float, a11_fraction: float | None = None
-) -> dict:
+) -> AddedMasses:
     """Added masses (a11', a22', a66') in the ½ρTL² / ½ρTL⁴ scales.
 
     a22', a66' from Clarke, Gedling & Hine (1983) (see module docstring), a11' as a
@@ -31,7 +61,7 @@ def clarke_added_mass(
     t_l, b_t, b_l = draft / length, breadth / draft, breadth / length
     yvdot = math.pi * t_l**2 * (1.0 + 0.16 * cb * b_t - 5.1 * b_l**2)  # by ½ρL³
     nrdot = math.pi * t_l**2 * (1.0 / 12.0 + 0.017 * cb * b_t - 0.33 * b_l)  # by ½ρL⁵
-    return dict(a11=a11_fraction * m_nd, a22=yvdot / t_l, a66=nrdot / t_l)
+    return AddedMasses(a11=a11_fraction * m_nd, a22=yvdot / t_l, a66=nrdot / t_l)
 
 
 #: Validity of the Clarke, Gedling & Hine (1983) regressions as commonly quoted: the model
@@ -41,7 +71,7 @@ CLARKE_LB_RANGE = (3.0, 9.0)
 
 def clarke_linear_derivatives(
     length: float, breadth: float, draft: float, block_coefficient: float
-) -> dict:
+) -> LinearDerivatives:
     """Linear sway and yaw derivatives from Clarke, Gedling & Hine (1983), "The application
     of manoeuvring criteria in hull design using linear theory", Trans. RINA 125, 45-68
     (regressions of rotating-arm and PMM tests), with S = π(T/L)²:
@@ -50,14 +80,14 @@ def clarke_linear_derivatives(
     −N_v' = S (1/2 + 2.4 T/L),           −N_r' = S (1/4 + 0.039 B/T − 0.56 B/L),
 
     on ½ρL²U (Y_v), ½ρL³U (Y_r, N_v), ½ρL⁴U (N_r), converted here to the Hong et al. scales
-    of `jaxtow.Vessel` (½ρTLU etc.: multiply by L/T). Returns the four derivatives and
+    of `jaxtow.Vessel` (½ρTLU etc.: multiply by L/T). Returns the four derivatives with
     ``lb_in_range`` (L/B inside `CLARKE_LB_RANGE`). The regressions are for ship forms: a
     barge's skegs, rake and square bilges are outside what they describe (docs/estimates.md
     compares them with Barge 2a/2b's measured values)."""
     L, B, T, cb = (float(x) for x in (length, breadth, draft, block_coefficient))
     S = math.pi * (T / L) ** 2
     to_hong = L / T
-    return dict(
+    return LinearDerivatives(
         Yv=-S * (1.0 + 0.40 * cb * B / T) * to_hong,
         Yr=-S * (-0.5 + 2.2 * B / L - 0.080 * B / T) * to_hong,
         Nv=-S * (0.5 + 2.4 * T / L) * to_hong,
@@ -68,7 +98,7 @@ def clarke_linear_derivatives(
 
 def kijima_linear_derivatives(
     length: float, breadth: float, draft: float, block_coefficient: float, a11: float = 0.0
-) -> dict:
+) -> LinearDerivatives:
     """Linear sway and yaw derivatives from Kijima, Katsuno, Nakiri & Furukawa (1990), "On
     the manoeuvring performance of a ship with the parameter of loading condition", J. Soc.
     Naval Arch. Japan 168, 141-148 (even keel), with k = 2T/L:
@@ -82,7 +112,7 @@ def kijima_linear_derivatives(
     reproduced here): a barge, and a skeg above all, is outside it."""
     L, B, T, cb = (float(x) for x in (length, breadth, draft, block_coefficient))
     k = 2.0 * T / L
-    return dict(
+    return LinearDerivatives(
         Yv=-(0.5 * math.pi * k + 1.4 * cb * B / L),
         Yr=0.25 * math.pi * k + float(a11),
         Nv=-k,
@@ -147,7 +177,21 @@ class Skegs:
         return 2.0 * self.span**2 / self.lateral_area
 
 
-def skeg_derivatives(length: float, draft: float, skegs: Skegs) -> dict:
+@dataclass(frozen=True)
+class SkegDerivatives:
+    """What skegs add to Y_v', Y_r', N_v', N_r' (`skeg_derivatives`), with the ``lift_slope``
+    [1/rad] at the effective ``aspect_ratio`` and the centre of pressure ``x`` [m]."""
+
+    Yv: float
+    Yr: float
+    Nv: float
+    Nr: float
+    lift_slope: float
+    aspect_ratio: float
+    x: float
+
+
+def skeg_derivatives(length: float, draft: float, skegs: Skegs) -> SkegDerivatives:
     """The skegs' contribution to Y_v', Y_r', N_v', N_r' in the Hong et al. scales of
     `jaxtow.Vessel` (½ρLTU, ½ρL²TU, ½ρL³TU), from quasi-steady lifting-surface theory:
 
@@ -160,8 +204,7 @@ def skeg_derivatives(length: float, draft: float, skegs: Skegs) -> dict:
     A stern skeg (ξ < 0) adds sway damping, a stabilising N_v' and yaw damping, as model
     tests of barges with skegs show. The formulation leaves out the skeg's interaction with
     the hull (the cross-flow a skeg stops at the stern bilge, the hull's wake and the
-    straightening of the flow): docs/estimates.md compares it with Barge 2a/2b. Returns the
-    four increments and ``lift_slope``, ``aspect_ratio``, ``x`` [m]."""
+    straightening of the flow): docs/estimates.md compares it with Barge 2a/2b."""
     L, T = float(length), float(draft)
     x = float(skegs.x) if skegs.x is not None else -0.5 * L + 0.5 * skegs.chord
     if not -0.5 * L <= x <= 0.5 * L:
@@ -170,7 +213,7 @@ def skeg_derivatives(length: float, draft: float, skegs: Skegs) -> dict:
     cla = helmbold_lift_slope(lam)
     k = skegs.count * skegs.lateral_area * cla / (L * T)
     xi = x / L
-    return dict(
+    return SkegDerivatives(
         Yv=-k, Yr=-k * xi, Nv=-k * xi, Nr=-k * xi * xi, lift_slope=cla, aspect_ratio=lam, x=x
     )
 
@@ -223,7 +266,7 @@ def particulars_derivatives(
         Izz=f"Izz' = m' (k_zz/L)^2, k_zz = {kzz:g} L: {ASSUMPTIONS['radii_of_gyration']['note']}",
     )
     added = clarke_added_mass(m, L, B, T)
-    vals.update(added)
+    vals.update(added.as_parameters())
     for k in ("a11", "a22", "a66"):
         notes[k] = (
             ASSUMPTIONS["a11_over_m"]["note"]
@@ -231,13 +274,14 @@ def particulars_derivatives(
             else f"Clarke, Gedling & Hine (1983) added-mass regression with C_B = {cb:g}, T = {T:g} m"
         )
     if regression == "clarke":
-        lin = clarke_linear_derivatives(L, B, T, cb)
-        where = "" if lin.pop("lb_in_range") else "; L/B OUTSIDE the regression's range"
+        reg = clarke_linear_derivatives(L, B, T, cb)
+        where = "" if reg.lb_in_range else "; L/B OUTSIDE the regression's range"
         src = "Clarke, Gedling & Hine (1983)"
     else:
-        lin = kijima_linear_derivatives(L, B, T, cb, a11=added["a11"])
+        reg = kijima_linear_derivatives(L, B, T, cb, a11=added.a11)
         where = ""
         src = "Kijima, Katsuno, Nakiri & Furukawa (1990)"
+    lin = reg.as_parameters()
     vals.update(lin)
     for k in lin:
         notes[k] = (
@@ -247,12 +291,12 @@ def particulars_derivatives(
     if skegs is not None:
         add = skeg_derivatives(L, T, skegs)
         for k in lin:
-            vals[k] += add[k]
+            vals[k] += getattr(add, k)
             notes[k] = (
                 f"{src} linear regression with C_B = {cb:g}{where}, plus {skegs.count} "
-                f"skeg(s) as lifting surfaces ({k}' {add[k]:+.4f}: Helmbold lift slope "
-                f"{add['lift_slope']:.3f}/rad at effective aspect ratio "
-                f"{add['aspect_ratio']:.2f}, acting at x = {add['x']:g} m); estimate"
+                f"skeg(s) as lifting surfaces ({k}' {getattr(add, k):+.4f}: Helmbold lift "
+                f"slope {add.lift_slope:.3f}/rad at effective aspect ratio "
+                f"{add.aspect_ratio:.2f}, acting at x = {add.x:g} m); estimate"
             )
     for k in _BORROWED:
         vals[k] = _TABLE_3_7["2a"][k]
@@ -278,9 +322,3 @@ def vessel_from_particulars(
         length, breadth, draft, block_coefficient, regression, skegs=skegs
     )
     return Vessel(**vals, name=name, assumed=tuple(notes.items()))
-
-
-def radii_of_gyration(length: float, breadth: float) -> tuple[float, float, float]:
-    """(k_xx, k_yy, k_zz) [m] from `ASSUMPTIONS['radii_of_gyration']` (Journee's approximations)."""
-    fx, fy, fz = ASSUMPTIONS["radii_of_gyration"]["value"]
-    return fx * breadth, fy * length, fz * length

@@ -17,7 +17,7 @@ from .._values import U_TUG_DEFAULT
 from ..forces import CombinedForce, IrregularWaveDriftForce, WaveDriftForce
 from ..waves import DEFAULT_OMEGA, Jonswap
 from ._barge2 import VESSELS, barge2_scales, default_towline
-from ._databases import drift_source
+from ._sources import drift_source
 
 
 def _barge2_tow(version, l0, xp, u_tug, external, draft=None) -> TowModel:
@@ -50,7 +50,7 @@ def barge2_wave_model(
     ``wind``: an optional `jaxtow.forces.WindForce` added to the waves (thesis 7.2.2).
     Sweep ω and ζa as ``external.omega`` / ``external.zeta_a`` (without wind), the tug speed
     as ``u_tug``. ``form``: the forward-speed form of the drift (`jaxtow.drift.sailing_drift`)."""
-    q = drift_source(qtf)[0]
+    q = drift_source(qtf).qtf()
     waves = WaveDriftForce(
         qtf=q, omega=omega, zeta_a=zeta_a, scales=barge2_scales(u_tug, draft), form=form
     )
@@ -73,7 +73,7 @@ def barge2_irregular_model(
 ) -> TowModel:
     """Barge 2a/2b in an irregular head sea (JONSWAP Hs, Tp; mean drift, thesis 6.3); sweep Tp
     as ``external.spectrum.tp``. ``omega``: integration grid (default `jaxtow.waves.DEFAULT_OMEGA`)."""
-    q = drift_source(qtf)[0]
+    q = drift_source(qtf).qtf()
     w = np.asarray(DEFAULT_OMEGA if omega is None else omega, float)
     force = IrregularWaveDriftForce(
         qtf=q,

@@ -16,20 +16,10 @@ if TYPE_CHECKING:
         claims_table as claims_table,
     )
     from ._html import (
-        SECTIONS as REPORT_SECTIONS,
+        REPORT_SECTIONS as REPORT_SECTIONS,
         criteria_lines as criteria_lines,
         tow_report_html as tow_report_html,
     )
 
-__all__ = [
-    "SOURCE_NAMES",
-    "SOURCES",
-    "attribution_text",
-    "claims_markdown",
-    "claims_table",
-    "REPORT_SECTIONS",
-    "tow_report_html",
-    "criteria_lines",
-]
 
-__getattr__, __dir__ = _attach(__name__, __file__)
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

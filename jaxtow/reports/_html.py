@@ -1,10 +1,12 @@
 """One self-contained HTML report of a tow study (figures embedded as PNG data; no external
-file, script or style sheet), for a surveyor to read: the verdicts first, then resistance
-and speed, stability, the map, the time-domain check, the wave drift, the validity warnings
-in plain words, and every estimate the numbers depend on.
+file, script or style sheet), for a surveyor to read: the overall verdict and its one
+sentence first, then the criteria (four-valued), the operating points, the way forward, the
+findings; then resistance and speed, stability, the map, the time-domain check, the wave
+drift, the validity in plain words and every estimate the numbers depend on.
 
 The page is the jinja2 template ``templates/tow_report.html`` (autoescaped); the functions
-here turn a study's summary into the rows and sentences it shows, one function a section."""
+here turn the study's typed records (`jaxtow.studies.StudySummary`) into the rows and
+sentences it shows, one function a section."""
 
 from __future__ import annotations
 
@@ -13,13 +15,13 @@ import datetime
 
 import jinja2
 
-from ..studies._assessment import VALIDITY_WORDS as plain
-from ..studies._resistance import resistance_table
+from .._units import KNOT, TONNE_FORCE
+from ..studies import VALIDITY_WORDS, StudySummary, resistance_table
 
-__all__ = ["SECTIONS", "tow_report_html"]
+__all__ = ["REPORT_SECTIONS", "tow_report_html", "criteria_lines", "VERDICT_CLASSES"]
 
 #: Section ids of the report, in order (the tests check each is present).
-SECTIONS = (
+REPORT_SECTIONS = (
     "verdict",
     "tow",
     "resistance",
@@ -31,8 +33,15 @@ SECTIONS = (
     "assumptions",
     "provenance",
 )
-
-_TONNE = 9.80665e3
+#: The colour class of each verdict (overall and per criterion).
+VERDICT_CLASSES = {
+    "acceptable": "ok",
+    "not acceptable": "bad",
+    "not determined": "warn",
+    "pass": "ok",
+    "fail": "bad",
+    "not checked": "grey",
+}
 
 _ENV = jinja2.Environment(
     loader=jinja2.PackageLoader("jaxtow.reports", "templates"),
@@ -40,32 +49,6 @@ _ENV = jinja2.Environment(
     undefined=jinja2.StrictUndefined,
     keep_trailing_newline=True,
 )
-
-
-def _verdict_class(key: str, outside) -> str:
-    if key == "follows" and not outside:
-        return "ok"
-    return "warn" if key == "follows" else "bad"
-
-
-def _verdicts(s: dict) -> dict:
-    rows, classes = [], []
-    for label, c in _conditions(s):
-        at = "" if "at_operating_speed" in label or label == "calm water" else ", design speed"
-        rows.append([label + at, c["verdict_text"]])
-        classes.append(_verdict_class(c["verdict"], c["outside_validity"]))
-    for r in s.get("resistance", []):
-        if r["status"] == "successful":
-            txt = (
-                f"operating speed {r['operating_speed']:.2f} m/s "
-                f"({r['operating_speed'] / 0.514444:.1f} kn)"
-                + (f", transit {r['transit_time_h']:.0f} h" if "transit_time_h" in r else "")
-            )
-        else:
-            txt = f"no operating speed: {r['message']}"
-        rows.append([f"speed in {r['sea_state']}", txt])
-        classes.append("ok" if r["status"] == "successful" else "bad")
-    return dict(rows=rows, classes=classes)
 
 
 def _number(x, units: str) -> str:
@@ -76,309 +59,323 @@ def _number(x, units: str) -> str:
     return f"{x:.1f} {units}" if units not in ("-", "") else f"{x:.3g}"
 
 
-def _criteria(s: dict) -> dict:
-    """The guideline table of `jaxtow.studies` (``summary['assessment']``): criterion, value,
-    limit, PASS/FAIL, margin, basis; and the findings."""
-    a = s.get("assessment")
-    if not a:
-        return dict(rows=[], classes=[], guideline="", findings=[])
+def _criteria(s: StudySummary) -> dict:
+    """The guideline table: criterion, condition, value, limit, verdict, margin, why/basis."""
+    a = s.assessment
+    if a is None:
+        return dict(rows=[], classes=[], guideline="", counts={})
     rows, classes = [], []
-    for ch in a["checks"]:
-        u = ch["units"]
-        sign = ">=" if ch["kind"] == "min" else "<="
-        verdict = "PASS" if ch["passed"] else "FAIL"
-        basis = ch.get("detail", "") or ""
-        if ch["estimate"]:
-            basis = (basis + "; " if basis else "") + "limit is a documented estimate"
+    for ch in a.checks:
+        u = ch.units
+        sign = ">=" if ch.kind == "min" else "<="
+        margin = _number(ch.margin, u)
+        if ch.time_s is not None and ch.value is not None:
+            word = "halves" if ch.value < 0 else "doubles"
+            margin += f" (a disturbance {word} in {ch.time_s / 60:.1f} min)"
+        basis = ch.reason or ch.detail
+        if ch.estimate:
+            basis = (basis + "; " if basis else "") + "the limit rests on a documented estimate"
         rows.append(
             [
-                ch["criterion"],
-                _number(ch["value"], u),
-                f"{sign} {_number(ch['limit'], u)}",
-                verdict,
-                _number(ch["margin"], u),
+                ch.criterion,
+                _number(ch.value, u),
+                f"{sign} {_number(ch.limit, u)}" if ch.limit is not None else "-",
+                ch.verdict.upper(),
+                margin,
                 basis,
             ]
         )
-        classes.append("ok" if ch["passed"] else "bad")
-    return dict(rows=rows, classes=classes, guideline=a["guideline"], findings=a["findings"])
+        classes.append(VERDICT_CLASSES.get(ch.verdict, ""))
+    return dict(rows=rows, classes=classes, guideline=a.guideline, counts=a.counts())
 
 
-def _advice(s: dict) -> list:
-    """Rows of the advice table: condition, what to change, from, to, new max Re λ, checked."""
+def _operating(s: StudySummary) -> list:
+    """Rows of the operating table: sea state, speed, the pull the tug gives, the tension."""
+    a = s.assessment
+    if a is None:
+        return []
     rows = []
-    for a in s.get("advice", []):
-        if a["value"] is None:
-            rows.append(
-                [
-                    a["condition"],
-                    a["what"],
-                    a["present_text"],
-                    f"no value from {a['searched_text']} makes it follow",
-                    "-",
-                    "-",
-                ]
-            )
+    for op in a.operating:
+        if op.speed is None:
+            rows.append([op.sea_state, "the tug cannot hold the tow", "-", "-", "-"])
             continue
         rows.append(
             [
-                a["condition"],
-                a["what"],
-                a["present_text"],
-                a["value_text"],
-                f"{a['new_max_real']:.3g} 1/s",
-                "follows the tug" if a["verified"] else "NOT confirmed by the full search",
+                op.sea_state,
+                f"{op.speed:.2f} m/s ({op.speed / KNOT:.1f} kn)",
+                _kn(op.available_pull),
+                _kn(op.towline_tension),
+                f"{op.transit_time_h:.0f} h" if op.transit_time_h is not None else "-",
             ]
         )
     return rows
 
 
-def criteria_lines(summary: dict) -> list[str]:
-    """The guideline table and the findings as plain-text lines (the console's verdict; the
-    same rows as the report's)."""
-    c = _criteria(summary)
-    if not c["rows"]:
+def _kn(x) -> str:
+    return "-" if x is None else f"{x / 1e3:.1f} kN"
+
+
+def _advice(s: StudySummary) -> list:
+    """Rows of the way forward: condition, change, now, to, the tow-file line, re-checked."""
+    rows = []
+    for a in s.advice:
+        if a.value is None:
+            to = f"no value from {a.searched_text} does it" + (f" ({a.note})" if a.note else "")
+            rows.append([a.condition, a.what, a.present_text, to, "-", "-"])
+            continue
+        check = "passes" if a.verified else "NOT confirmed by the full check"
+        if a.new_max_real is not None:
+            check += f" (max Re lambda {a.new_max_real:.3g} 1/s)"
+        note = f"; {a.note}" if a.note else ""
+        rows.append(
+            [
+                a.condition,
+                a.what,
+                a.present_text,
+                (a.value_text or "") + note,
+                a.tow_file or "-",
+                check,
+            ]
+        )
+    return rows
+
+
+def criteria_lines(s: StudySummary) -> list[str]:
+    """The decision, the guideline table, the operating points, the findings and the advice
+    as plain-text lines (the console's verdict; the same rows as the report's)."""
+    a = s.assessment
+    if a is None:
         return []
-    out = [f"criteria of {c['guideline']}:"]
+    out = [a.reason, f"criteria of {a.guideline}:"]
+    c = _criteria(s)
     for crit, value, limit, verdict, margin, basis in c["rows"]:
         out.append(
-            f"  {verdict}  {crit}: {value} (limit {limit}, margin {margin})"
+            f"  {verdict:<15} {crit}: {value} (limit {limit}, margin {margin})"
             + (f"; {basis}" if basis else "")
         )
-    out += [f"FINDING: {f}" for f in c["findings"]]
-    for cond, what, now, to, lam, checked in _advice(summary):
+    for sea, speed, pull, tension, transit in _operating(s):
         out.append(
-            f"ADVICE ({cond}): {what} {now} -> {to}" + (f"; {checked}" if lam != "-" else "")
+            f"  operating, sea state {sea}: {speed}; tug pull {pull}, towline tension "
+            f"{tension}; transit {transit}"
         )
+    out += [f"FINDING: {f}" for f in a.findings]
+    for cond, what, now, to, line, checked in _advice(s):
+        out.append(f"ADVICE ({cond}): {what} {now} -> {to} [{line}]; {checked}")
     return out
 
 
-def _towline_rows(t: dict, s: dict) -> list:
-    L, F = s["length"], s["force_scale"]
+def _towline_rows(s: StudySummary) -> list:
+    t = s.towline
+    if t is None:
+        return []
     rows = [
-        ["towline length", f"{t['length_m']:.1f} m (l0' = {t['l0']:g})"],
+        ["towline length", f"{t.length_m:.1f} m (l0' = {t.l0:g})"],
         [
             "attachment",
-            f"{t['xp'] * L:.1f} m ahead of the CoG, {t['yp'] * L:.1f} m to port "
-            f"(x_p' = {t['xp']:g}, y_p' = {t['yp']:g})",
+            f"{t.xp * s.length:.1f} m ahead of the CoG, {t.yp * s.length:.1f} m to port "
+            f"(x_p' = {t.xp:g}, y_p' = {t.yp:g})",
         ],
-        ["axial stiffness EA", f"{t['EA_nd'] * F:.3g} N (EA' = {t['EA_nd']:.1f})"],
+        ["axial stiffness EA", f"{t.EA:.3g} N (EA' = {t.EA_nd:.1f})"],
     ]
-    g = t.get("strength")
-    if not g:
+    g = t.strength
+    if g is None:
         rows.append(
             [
                 "towline strength",
-                "MBL not given: name a catalogue line ([towline] line and diameter_mm, or "
-                "segments) to check it against the bollard pull",
+                "no catalogue line named: give [towline] line and diameter_mm (or segments) "
+                "to check the MBL against the bollard pull",
             ]
         )
-    if g:
+    else:
         rows.append(
             [
                 "towline make",
-                "; ".join(f"{x['name']}, {x['length_m']:.0f} m" for x in g["segments"]),
+                "; ".join(f"{x.name} ({x.role}), {x.length:.0f} m" for x in g.segments),
             ]
         )
-        text = f"weakest {g['weakest']}, MBL {g['mbl_kN']:.0f} kN"
-        if "utilisation" in g:
+        text = f"weakest {g.weakest}, MBL {g.mbl / 1e3:.0f} kN"
+        if g.max_end_tension is not None and g.utilisation is not None:
             text += (
-                f"; largest end tension of the valid equilibria {g['max_end_tension_kN']:.0f}"
-                f" kN = {100 * g['utilisation']:.1f} % of MBL (mean loads: dynamic "
+                f"; largest mean end tension {g.max_end_tension / 1e3:.0f} kN "
+                f"({g.max_tension_condition}) = {100 * g.utilisation:.1f} % of MBL (dynamic "
                 "peaks come on top)"
             )
-        if "mbl_over_bollard_pull" in g:
-            text += f"; MBL / bollard pull = {g['mbl_over_bollard_pull']:.2f}"
+        if g.mbl_over_bollard_pull is not None:
+            text += f"; MBL / bollard pull = {g.mbl_over_bollard_pull:.2f}"
         rows.append(["towline strength", text])
-    c = t.get("catenary")
-    if c:
+    c = t.catenary
+    if c is not None:
         text = (
-            f"span {c['span_m']:.1f} m, sag {c['sag_m']:.1f} m, end tension "
-            f"{c['end_tension'] / 1e3:.1f} kN, effective stiffness "
-            f"{c['effective_stiffness_nd']:.3g} (elastic EA'/l0' "
-            f"{c['elastic_stiffness_nd']:.3g})"
+            f"span {c.span_m:.1f} m, sag {c.sag_m:.1f} m, end tension {c.end_tension / 1e3:.1f} "
+            f"kN, effective stiffness {c.effective_stiffness_nd:.3g} (elastic EA'/l0' "
+            f"{c.elastic_stiffness_nd:.3g})"
         )
-        if "water_depth" in c:
+        if c.water_depth is not None and c.seabed_clearance_m is not None:
             text += (
-                f", seabed clearance {c['seabed_clearance_m']:.1f} m in "
-                f"{c['water_depth']:g} m of water"
+                f", seabed clearance {c.seabed_clearance_m:.1f} m in {c.water_depth:g} m of water"
             )
         rows.append(["catenary in calm water", text])
     return rows
 
 
-def _tow_rows(s: dict) -> list:
+def _tow_rows(s: StudySummary) -> list:
     rows = [
-        ["vessel L x B x T", f"{s['length']:g} m x {s['breadth']:g} m x {s['draft']:g} m"],
-        ["design tow speed", f"{s['design_speed']:g} m/s"],
-        ["wave drift", s["drift_source"]],
-        ["sailing form of the drift", s["sailing_form"]],
+        ["vessel L x B x T", f"{s.length:g} m x {s.breadth:g} m x {s.draft:g} m"],
+        ["design tow speed", f"{s.design_speed:g} m/s ({s.design_speed / KNOT:.1f} kn)"],
+        ["wave drift", s.drift_source],
+        ["sailing form of the drift", s.sailing_form],
     ]
-    if "stability_coefficient_c" in s:
-        c = s["stability_coefficient_c"]
+    if s.stability_coefficient_c is not None:
+        c = s.stability_coefficient_c
         rows.append(["course stability c", f"{c:+.4f} ({'stable' if c > 0 else 'unstable'})"])
-    if "towline" in s:
-        rows += _towline_rows(s["towline"], s)
-    if "tug" in s:
-        g = s["tug"]
+    rows += _towline_rows(s)
+    if s.tug is not None:
+        g = s.tug
+        eff = f"{g.efficiency:g}" + (" (estimate)" if g.efficiency_estimate else "")
+        if g.efficiencies:
+            eff += "; " + ", ".join(f"{k}: {v:g}" for k, v in g.efficiencies.items())
         rows.append(
             [
                 "tug",
-                f"bollard pull {g['bollard_pull'] / _TONNE:.1f} t, free speed "
-                f"{g['free_speed']:g} m/s, efficiency {g['efficiency']:g}",
+                f"bollard pull {g.bollard_pull / TONNE_FORCE:.1f} t, free speed "
+                f"{g.free_speed:g} m/s, efficiency {eff}",
             ]
         )
     return rows
 
 
-def _resistance(s: dict) -> dict | None:
-    if "resistance" not in s:
+def _resistance(s: StudySummary) -> dict | None:
+    if not s.resistance:
         return None
-    head, rows = resistance_table(s["resistance"])
-    names = list(s.get("sea_states", {}) or [r["sea_state"] for r in s["resistance"]])
-    return dict(head=head, rows=rows, sea_states=names)
+    head, rows = resistance_table(s.resistance)
+    return dict(head=head, rows=rows, sea_states=[r.sea_state for r in s.resistance])
 
 
-def _conditions(s: dict) -> list:
-    """(label, record) of calm water and of each sea state assessed, at the design speed and
-    at the sea state's operating speed where it differs."""
-    out = [("calm water", s["calm"])] if "calm" in s else []
-    for k, v in s.get("sea_states", {}).items():
-        out.append((f"sea state {k} (Hs {v['hs']:g} m, Tp {v['tp']:g} s)", v))
-        if "at_operating_speed" in v:
-            u = v["at_operating_speed"]["speed"]
-            out.append(
-                (f"sea state {k} at its operating speed {u:.2f} m/s", v["at_operating_speed"])
-            )
-    return out
-
-
-def _stability(s: dict) -> list:
+def _stability(s: StudySummary) -> list:
     out = []
-    for label, rec in _conditions(s):
-        F, rate = (
-            rec.get("force_scale", s["force_scale"]),
-            1.0 / rec.get("time_scale", s["time_scale"]),
-        )
+    for c in s.conditions:
         rows = [
             [
-                f"{e['psi_deg']:+.3f}",
-                f"{e['gamma_deg']:+.3f}",
-                f"{e['tension'] * F / 1e3:.1f}",
-                f"{e['max_real'] * rate:+.3g}",
-                e["stability"],
-                "yes" if e["valid"] else "NO: " + ", ".join(e["failed_flags"]),
+                f"{e.psi_deg:+.3f}",
+                f"{e.gamma_deg:+.3f}",
+                f"{e.tension / 1e3:.1f}",
+                f"{e.max_real:+.3g}",
+                e.stability + (" (straight behind)" if e.straight else ""),
+                "yes" if e.valid else "no" if not e.found else "outside its validity",
             ]
-            for e in rec["equilibria"]
+            for e in c.equilibria
         ]
-        out.append(
-            dict(
-                label=label, verdict_text=rec["verdict_text"], rows=rows, notes=rec.get("notes", [])
-            )
+        label = (
+            c.name
+            + (f" (Hs {c.hs:g} m, Tp {c.tp:g} s)" if c.kind != "calm" else "")
+            + (f", {c.speed:.2f} m/s" if c.kind != "operating speed" else "")
         )
+        out.append(dict(label=label, verdict_text=c.verdict_text, rows=rows, notes=c.notes))
     return out
 
 
-def _map(s: dict) -> dict | None:
-    if "map" not in s:
+def _map(s: StudySummary) -> dict | None:
+    m = s.map
+    if m is None:
         return None
-    m, L = s["map"], s["length"]
+    L = m.length
+    inside = m.xp[0] <= m.design_xp <= m.xp[1] and m.l0[0] <= m.design_l0 <= m.l0[1]
     return dict(
-        xp=f"{m['xp'][0] * L:.1f} to {m['xp'][1] * L:.1f} m (x_p' {m['xp'][0]:g} to "
-        f"{m['xp'][1]:g}, {m['xp'][2]} points)",
-        l0=f"{m['l0'][0] * L:.0f} to {m['l0'][1] * L:.0f} m (l0' {m['l0'][0]:g} to "
-        f"{m['l0'][1]:g}, {m['l0'][2]} points)",
-        share=f"{100 * m['straight_stable_share']:.0f}",
+        xp=f"{m.xp[0] * L:.1f} to {m.xp[1] * L:.1f} m ahead of the CoG ({m.xp[2]} points)",
+        l0=f"{m.l0[0] * L:.0f} to {m.l0[1] * L:.0f} m ({m.l0[2]} points)",
+        design=f"{m.design_xp * L:.1f} m, {m.design_l0 * L:.0f} m"
+        + ("" if inside else " (outside the map)"),
+        share=f"{100 * m.straight_stable_share:.0f}",
     )
 
 
-def _time_domain(s: dict) -> dict | None:
-    if "time_domain" not in s:
+def _time_domain(s: StudySummary) -> dict | None:
+    t = s.time_domain
+    if t is None:
         return None
-    t, L, T = s["time_domain"], s["length"], s["time_scale"]
-    yr = t["yaw_range"]
-    width, period = t["path_width"], t["slewing_period"]
+    L, T = s.length, s.time_scale
     row = [
-        t["outcome"],
-        "-" if width is None else f"{width * L:.1f}",
-        "-" if not yr else f"{yr[0]:.1f} .. {yr[1]:.1f}",
-        "-" if period is None else f"{period * T:.0f}",
-        "yes" if t["ended_early"] else "no",
+        t.outcome,
+        "-" if t.path_width is None else f"{t.path_width * L:.1f}",
+        "-" if not t.yaw_range else f"{t.yaw_range[0]:.1f} .. {t.yaw_range[1]:.1f}",
+        "-" if t.slewing_period is None else f"{t.slewing_period * T:.0f}",
+        "yes" if t.ended_early else "no",
     ]
     return dict(
         row=row,
-        psi0=f"{t['psi0_deg']:g}",
-        y0=f"{t['y0'] * L:.1f} m (y0' = {t['y0']:g})",
-        t1=f"{t['t1'] * T / 60:.0f} min ({t['t1']:g} L/U)",
+        psi0=f"{t.psi0_deg:g}",
+        y0=f"{t.y0 * L:.1f} m (y0' = {t.y0:g})",
+        t1=f"{t.t1 * T / 60:.0f} min ({t.t1:g} L/U)",
     )
 
 
-def _mean_drift(s: dict) -> dict | None:
-    if not s.get("mean_drift"):
+def _mean_drift(s: StudySummary) -> dict | None:
+    if s.drift is None or not s.drift.mean_drift:
         return None
-    head = ["sea state", "Hs m", "Tp s", "Fx at rest kN", f"Fx at {s['design_speed']:g} m/s kN"]
+    head = ["sea state", "Hs m", "Tp s", "Fx at rest kN", f"Fx at {s.design_speed:g} m/s kN"]
     rows = [
         [
-            r["sea_state"],
-            f"{r['hs']:g}",
-            f"{r['tp']:g}",
-            f"{r['fx_stationary'] / 1e3:.1f}",
-            f"{r['fx_design_speed'] / 1e3:.1f}",
+            r.sea_state,
+            f"{r.hs:g}",
+            f"{r.tp:g}",
+            f"{r.fx_stationary / 1e3:.1f}",
+            f"{r.fx_design_speed / 1e3:.1f}",
         ]
-        for r in s["mean_drift"]
+        for r in s.drift.mean_drift
     ]
     return dict(head=head, rows=rows)
 
 
-def _validity(s: dict) -> list:
+def _validity(s: StudySummary) -> list:
     """(class, sentence) of every validity warning, in plain words."""
     items = []
-    for label, rec in _conditions(s):
-        items += [("warn", f"{label}: {plain.get(k, k)}.") for k in rec["outside_validity"]]
-    items += [
-        ("warn", f"{r['sea_state']}: {r['message']}")
-        for r in s.get("resistance", [])
-        if r.get("message")
-    ]
-    cat = s.get("towline", {}).get("catenary", {})
-    if cat and not cat.get("seabed_clear", True):
+    for c in s.conditions:
+        items += [("warn", f"{c.name}: {w}.") for w in c.outside_text]
+    items += [("warn", f"{r.sea_state}: {r.message}") for r in s.resistance if r.message]
+    cat = s.towline.catenary if s.towline is not None else None
+    if cat is not None and cat.seabed_clearance_m is not None and cat.seabed_clearance_m < 0:
         items.append(
             (
                 "bad",
-                f"the towline's lowest point ({cat['sag_m']:.0f} m below the ends) is below "
-                f"the seabed ({cat['water_depth']:g} m): it drags on the bottom.",
+                f"the towline's lowest point ({cat.sag_m:.0f} m below the ends) is below the "
+                f"seabed ({cat.water_depth:g} m): it drags on the bottom.",
             )
         )
-    items += [("warn", w) for w in s.get("warnings", [])]
-    td = s.get("time_domain", {}).get("validity", {})
-    items += [("warn", f"time-domain run: {plain.get(k, k)}.") for k, v in td.items() if not v]
+    items += [("warn", w) for w in s.warnings]
+    td = s.time_domain.validity if s.time_domain is not None else {}
+    items += [
+        ("warn", f"time-domain run: {VALIDITY_WORDS.get(k, k)}.") for k, v in td.items() if not v
+    ]
     return items
 
 
-def tow_report_html(summary: dict, figures: dict, *, version: str = "") -> str:
-    """The report's HTML text from a `jaxtow.studies.TowStudy` summary and PNG figures
-    (name → bytes, from `jaxtow.plotting.tow.study_figures`)."""
+def tow_report_html(summary: StudySummary, figures: dict, *, version: str = "") -> str:
+    """The report's HTML text from a `jaxtow.studies.StudySummary` and PNG figures (name →
+    bytes, from `jaxtow.plotting.tow.study_figures`)."""
     s = summary
-    r = s.get("head_sea_surge_at_highest_omega_over_wall_limit")
+    a = s.assessment
     return _ENV.get_template("tow_report.html").render(
         s=s,
         images={k: base64.b64encode(v).decode("ascii") for k, v in figures.items()},
-        design_speed=f"{s['design_speed']:g}",
-        verdicts=_verdicts(s),
+        verdict=None
+        if a is None
+        else dict(word=a.verdict.upper(), cls=VERDICT_CLASSES[a.verdict], reason=a.reason),
+        findings=[] if a is None else a.findings,
         criteria=_criteria(s),
+        operating=_operating(s),
         advice=_advice(s),
-        skipped=list(s.get("skipped", {}).items()),
-        figure_errors=list(s.get("figure_errors", {}).items()),
-        incomplete=s.get("incomplete"),
+        skipped=list(s.skipped.items()),
+        figure_errors=list(s.figure_errors.items()),
+        incomplete=s.incomplete,
         tow_rows=_tow_rows(s),
         resistance=_resistance(s),
         conditions=_stability(s),
         map=_map(s),
         time_domain=_time_domain(s),
-        wall_ratio=None if r is None else f"{r:.3f}",
+        wall_ratio=None if s.drift is None else f"{s.drift.wall_limit_ratio:.3f}",
         mean_drift=_mean_drift(s),
         validity=_validity(s),
         version=version,
         when=datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%d %H:%M UTC"),
-        times=[[k, f"{v:.1f}"] for k, v in s.get("step_times_s", {}).items()],
+        times=[[k, f"{v:.1f}"] for k, v in s.step_times_s.items()],
     )

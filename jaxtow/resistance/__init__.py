@@ -41,54 +41,37 @@ pull − resistance on a speed grid and refines it with optimistix's bisection, 
 adjoint gives exact derivatives dU/dθ = −(∂g/∂θ)/(∂g/∂U).
 """
 
-from __future__ import annotations
+from typing import TYPE_CHECKING
 
-from ._budget import (
-    COMPONENTS as COMPONENTS,
-    Budget as Budget,
-    PullRequirement as PullRequirement,
-    TowResistance as TowResistance,
-    WaveDrift as WaveDrift,
-    required_pull as required_pull,
-    resistance as resistance,
-    resistance_grid as resistance_grid,
-    tow_resistance as tow_resistance,
-)
-from ._flow import (
-    RHO_AIR as RHO_AIR,
-    CoefficientTable as CoefficientTable,
-    ManoeuvringCoefficients as ManoeuvringCoefficients,
-    OCIMFLoad as OCIMFLoad,
-    relative_flow as relative_flow,
-)
-from ._sea import SeaState as SeaState
-from ._speed import (
-    RESULTS as RESULTS,
-    OperatingPoint as OperatingPoint,
-    operating_speed as operating_speed,
-    status_message as status_message,
-)
-from ._tug import Tug as Tug
+from .._lazy import attach as _attach
 
-__all__ = [
-    "COMPONENTS",
-    "Budget",
-    "PullRequirement",
-    "TowResistance",
-    "tow_resistance",
-    "WaveDrift",
-    "required_pull",
-    "resistance",
-    "resistance_grid",
-    "RHO_AIR",
-    "CoefficientTable",
-    "ManoeuvringCoefficients",
-    "OCIMFLoad",
-    "relative_flow",
-    "SeaState",
-    "RESULTS",
-    "OperatingPoint",
-    "operating_speed",
-    "status_message",
-    "Tug",
-]
+if TYPE_CHECKING:
+    from ._budget import (
+        COMPONENTS as COMPONENTS,
+        OVERTAKEN_TOL as OVERTAKEN_TOL,
+        Budget as Budget,
+        PullRequirement as PullRequirement,
+        TowResistance as TowResistance,
+        WaveDrift as WaveDrift,
+        required_pull as required_pull,
+        resistance as resistance,
+        resistance_grid as resistance_grid,
+        tow_resistance as tow_resistance,
+    )
+    from ._flow import (
+        RHO_AIR as RHO_AIR,
+        CoefficientTable as CoefficientTable,
+        ManoeuvringCoefficients as ManoeuvringCoefficients,
+        OCIMFLoad as OCIMFLoad,
+        relative_flow as relative_flow,
+    )
+    from ._sea import SeaState as SeaState
+    from ._speed import (
+        RESULTS as RESULTS,
+        OperatingPoint as OperatingPoint,
+        operating_speed as operating_speed,
+        status_message as status_message,
+    )
+    from ._tug import Tug as Tug
+
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

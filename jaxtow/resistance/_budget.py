@@ -11,8 +11,8 @@ from .._rules import FINITE, NONNEGATIVE, POSITIVE, check_now, guard, is_concret
 from .._units import RHO_SEA, froude_number
 from .._vessel import Vessel
 from ..drift import (
-    METHODS,
     QTF,
+    WATERLINE_METHODS,
     Waterline,
     encounter_frequency,
     irregular_sailing_drift,
@@ -25,7 +25,9 @@ from ._flow import RHO_AIR, CoefficientTable, ManoeuvringCoefficients, OCIMFLoad
 from ._sea import SeaState
 from ._tug import Tug
 
-COMPONENTS = ("current", "wind", "waves", "tug")
+#: The components of the resistance budget: the hull's resistance through the water (the
+#: current included), the wind, the mean wave drift and the tug's own resistance.
+COMPONENTS = ("hull", "wind", "waves", "tug")
 
 
 #: Largest share of the sea's m0 the tow may overtake (encounter frequency <= 0) before the
@@ -36,7 +38,7 @@ OVERTAKEN_TOL = 1e-3
 class WaveDrift(eqx.Module):
     """Mean wave drift in a JONSWAP sea with forward speed, (F_x, F_y, N) [N, N, N·m].
 
-    Either a waterline method of `jaxtow.drift.METHODS` (``method``, ``waterline``, its keyword
+    Either a waterline method of `jaxtow.drift.WATERLINE_METHODS` (``method``, ``waterline``, its keyword
     ``options``) or a panel/WAMIT mean-drift ``qtf`` (then the encounter frequency and
     Aranha's formula gives the speed effect, `jaxtow.drift.sailing_drift` with ``form``,
     eqs 2.35-2.41). ``omega`` is the integration grid [rad/s] (default
@@ -61,9 +63,9 @@ class WaveDrift(eqx.Module):
     ):
         if (waterline is None) == (qtf is None):
             raise ValueError("WaveDrift needs exactly one of 'waterline' (with 'method') or 'qtf'")
-        if qtf is None and method not in METHODS:
+        if qtf is None and method not in WATERLINE_METHODS:
             raise ValueError(
-                f"parameter 'method': unknown drift method {method!r}; choose from {sorted(METHODS)}"
+                f"parameter 'method': unknown drift method {method!r}; choose from {sorted(WATERLINE_METHODS)}"
             )
         self.waterline, self.qtf = waterline, qtf
         self.method = "qtf" if qtf is not None else method
@@ -154,7 +156,7 @@ def tow_resistance(
 
 class Budget(eqx.Module):
     """Resistance budget at one speed: ``resistance`` (4,) [N] along the course for
-    `COMPONENTS` = (current, wind, waves, tug), ``body`` (4, 3) body-axis loads, ``speed``
+    `COMPONENTS` = (hull, wind, waves, tug), ``body`` (4, 3) body-axis loads, ``speed``
     [m/s], ``froude`` Fn = U/√(gL), ``overtaken_energy`` the fraction of the sea's m0 the
     tow overtakes (ω_e ≤ 0: no drift counted there; > 0 flags an incomplete wave
     resistance). ``total`` sums the components; ``shares`` gives each in % of the total."""

@@ -10,7 +10,7 @@ import jax.numpy as jnp
 
 from .._roots import bisect, brackets
 from .._rules import check_positive, guard, is_concrete
-from .._units import G, froude_number
+from .._units import TONNE_FORCE, G, froude_number
 from ..drift import FROUDE_MAX
 from ._budget import Budget, TowResistance, resistance
 from ._sea import SeaState
@@ -102,7 +102,7 @@ def status_message(p: OperatingPoint, tug: Tug, tow: TowResistance) -> str | Non
             f"no intersection of the pull and resistance curves: at zero speed the available pull "
             f"{float(p.pull) / 1e3:.1f} kN is below the resistance {need / 1e3:.1f} kN, so the tug "
             f"cannot hold the tow in this sea state (a tug of at least "
-            f"{need / float(tug.efficiency) / 9.80665e3:.1f} t bollard pull is needed: tow file "
+            f"{need / float(tug.efficiency) / TONNE_FORCE:.1f} t bollard pull is needed: tow file "
             f"[tug] bollard_pull_t, Tug.bollard_pull = {need / float(tug.efficiency) / 1e3:.1f} "
             "kN; see required_pull)"
         )

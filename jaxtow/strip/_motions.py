@@ -7,7 +7,8 @@ waterline; the modes are sway, heave, roll (starboard down), pitch (bow down) an
 to port) about the origin on the waterline at midships. Time dependence e^{−iω_e t} in the
 frame that moves with the ship at speed U; β is the direction the waves come from (0 head
 seas), so that they travel at χ = β + π and meet the ship at the encounter frequency
-ω_e = ω − kU cos χ = ω + kU cos β.
+ω_e = ω − kU cos χ = ω + kU cos β (`jaxtow.drift.encounter_frequency`, the one
+implementation).
 
 **Hydrodynamic forces** (STF, written for this time convention): with the section's complex
 coefficient t(x) = ω_e² a(x) + iω_e b(x) (the force per unit length is t times the
@@ -23,15 +24,29 @@ STF's table (A35 = −∫xa33 − (U/ω²)B33⁰ + …, B35 = −∫xb33 + UA33�
 through Tuck's theorem, and the transom terms from the end of that integration by parts.
 
 **Exciting forces**: Froude-Krylov at the wave frequency plus the diffraction force of each
-section through its radiation potentials at the encounter frequency (`_hull._section_wave_
-forces`), summed with the force levers v_j and the transom term c u_j(x_A) D_j(x_A).
+section through its radiation potentials at the encounter frequency
+(`jaxtow.strip._strips.section_wave_forces`), summed with the force levers v_j and the
+transom term c u_j(x_A) D_j(x_A).
 
 **Equations**: [−ω_e²(M + A) − iω_e(B + B_v) + C] η = F for the five modes, with M the rigid
-body about the origin (mass ρ∇ at (x_G, z_G), radii of gyration about G), C the
-hydrostatics (`hydrostatics`, with ρg∇(z_B − z_G) in roll and pitch), and B_v a linear
-viscous roll damping, a fraction of the critical 2√((M44 + A44) C44) at each encounter
-frequency (`jaxtow.ASSUMPTIONS['roll_damping']`, an estimate: potential flow alone leaves
-the roll resonance unbounded).
+body about the origin (`jaxtow.mass_matrix` of the `jaxtow.Loading`), C the hydrostatics
+(`jaxtow.hydrostatic_restoring` of the strips' waterplane), and B_v a linear viscous roll
+damping, a fraction of the critical at each encounter frequency
+(`jaxtow.roll_damping_coefficient`: potential flow alone leaves the roll resonance
+unbounded).
+
+**The section solve** is a value: a `SectionTable` over a grid of encounter frequencies,
+which `motions` and `added_resistance` accept (``sections=``) and reuse at any speed and
+heading it spans. Without one, the grid is planned from the encounter frequencies: at zero
+speed (``u`` the number 0) the frequencies themselves; at speed, where the values are
+numbers, the distinct encounter frequencies when there are at most ``n_frequencies`` of
+them, else ``n_frequencies`` geometrically spaced over their range; under tracing the
+geometric grid (its ends held out of the derivatives: a numerical plan, not physics).
+Frequencies below 0.3√(g/L) are held there and marked invalid.
+
+Everything is a JAX function: `jax.jit` / `equinox.filter_jit`, `jax.grad` with respect to
+the offsets, the principal dimensions, the loading, the speed and the frequencies, and
+`jax.vmap` over hull variants.
 """
 
 from __future__ import annotations
@@ -42,9 +57,35 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Bool, Complex, Float
 
-from .._values import ASSUMPTIONS
-from ._hull import MODES, Hull, _concrete, _exciting, _radiation, hydrostatics
-from ._sections import section_coefficients
+from .._body import Loading, hydrostatic_restoring, mass_matrix, roll_damping_coefficient
+from .._rules import FINITE, NONNEGATIVE, POSITIVE, check_type, guard, holds_tracers, is_concrete
+from .._units import SEA_WATER, Water
+from ..drift import encounter_frequency
+from ._hull import MODES, Hull
+from ._strips import SectionTable, exciting, hydrostatics, radiation, section_table
+
+__all__ = [
+    "MODES",
+    "FROUDE_LIMIT",
+    "LOW_FREQUENCY",
+    "Motions",
+    "MotionSolve",
+    "motions",
+    "solve_motions",
+    "rigid_body_matrices",
+    "plan_sections",
+]
+
+#: The highest Froude number U/√(gL) at which the motions are marked valid: strip theory
+#: assumes a moderate speed, and its usual validations reach Fn 0.4 (Journée's 1992 Wigley
+#: experiments ran at Fn 0.2, 0.3 and 0.4). An estimate of the theory's range, not a sharp
+#: limit. The parameter τ = Uω_e/g is no limit of it: τ > 1/4, where no radiated wave runs
+#: ahead of the ship, is the usual case in head seas (a Wigley hull at Fn 0.2 has τ ≈ 0.75
+#: at its motion peak), and the far-field resistance takes it into account.
+FROUDE_LIMIT = 0.4
+#: The lowest encounter frequency solved, by √(g/L): below it the sections are held there
+#: and the motions marked invalid (strip theory assumes waves shorter than the hull).
+LOW_FREQUENCY = 0.3
 
 
 class Motions(eqx.Module):
@@ -54,252 +95,239 @@ class Motions(eqx.Module):
     (b,) [rad] (waves from; 0 head seas) and speed ``u`` [m/s]; the encounter frequencies
     ``omega_e`` (w, b) [rad/s]; the hull's added mass and damping (w, b, 5, 5) at them, with
     the speed and transom terms, and the exciting forces (w, b, 5); ``valid`` (w, b): where
-    the encounter frequency lies inside the computed range (below it the section
-    coefficients are held at the lowest computed frequency) and the Froude number is at
-    most `FROUDE_LIMIT`. ``roll_damping``: the fraction of critical used (an estimate; a hull
-    without roll stability, GM ≤ 0, gets none, and its roll is meaningless)."""
+    the encounter frequency lies inside the solved range (below it the section
+    coefficients are held at the lowest solved frequency) and the Froude number is at
+    most `FROUDE_LIMIT`; the ``loading`` used (its roll damping a fraction of critical; a
+    hull without roll stability, GM ≤ 0, gets none, and its roll is meaningless)."""
 
     omega: Float[Array, " w"]
     beta: Float[Array, " b"]
-    u: float = eqx.field(static=True)
+    u: Float[Array, ""]
     omega_e: Float[Array, "w b"]
     rao: Complex[Array, "w b 5"]
     added_mass: Float[Array, "w b 5 5"]
     damping: Float[Array, "w b 5 5"]
     exciting: Complex[Array, "w b 5"]
     valid: Bool[Array, "w b"]
-    roll_damping: float = eqx.field(static=True)
+    loading: Loading
 
 
-#: The highest Froude number U/√(gL) at which the motions are marked valid: strip theory
-#: assumes a moderate speed, and its usual validations reach Fn 0.4 (Journée's 1992 Wigley
-#: experiments ran at Fn 0.2, 0.3 and 0.4). An estimate of the theory's range, not a sharp
-#: limit. The parameter τ = Uω_e/g is no limit of it: τ > 1/4, where no radiated wave runs
-#: ahead of the ship, is the usual case in head seas (a Wigley hull at Fn 0.2 has τ ≈ 0.75
-#: at its motion peak), and the far-field resistance (`maruo`) takes it into account.
-FROUDE_LIMIT = 0.4
+class MotionSolve(eqx.Module):
+    """The solve behind `Motions`, over the flattened (ω, β) table (m = w·b entries), for
+    the added resistance: the encounter frequencies as solved ``omega_e`` (m,) (moved off
+    zero), each station's heave ``added_mass``, ``damping`` (n, m) and beam-sea heave
+    exciting force ``heave_exciting`` (n, m), and its Froude-Krylov heave force
+    ``heave_froude_krylov`` (n, m) in the incident wave (with its phase along the hull)."""
+
+    motions: Motions
+    omega_e: Float[Array, " m"]
+    added_mass: Float[Array, "n m"]
+    damping: Float[Array, "n m"]
+    heave_exciting: Complex[Array, "n m"]
+    heave_froude_krylov: Complex[Array, "n m"]
 
 
-def encounter_frequency(omega, beta, u, g: float = 9.80665):
-    """ω_e = ω + (ω²/g) U cos β [rad/s] (β the direction the waves come from, 0 head seas);
-    negative where following waves overtake the ship."""
-    omega = jnp.asarray(omega, dtype=float)
-    return omega + omega**2 / g * u * jnp.cos(beta)
+def rigid_body_matrices(hull: Hull, loading: Loading | None = None, *, water: Water = SEA_WATER):
+    """The mass and restoring matrices (5, 5) over `MODES` about the origin on the waterline
+    at midships: mass ρ∇ at the ``loading``'s CoG (x_G default x_B) with its radii of
+    gyration (default the estimate for the hull's L and B; `jaxtow.mass_matrix`), and the
+    hydrostatics of the strips (`jaxtow.hydrostatic_restoring`). ``loading`` None: the
+    documented estimate, `jaxtow.Loading.estimate` at the hull's draft."""
+    loading = _loading(hull, loading)
+    hs = hydrostatics(hull)
+    mass = water.rho * hs.volume
+    x_g = hs.x_b if loading.x_g is None else loading.x_g
+    cog = jnp.stack([jnp.asarray(x_g, float), jnp.zeros(()), jnp.asarray(loading.z_g, float)])
+    radii = loading.radii_for(hull.length, hull.breadth)
+    m6 = mass_matrix(mass, cog, radii)
+    c6 = hydrostatic_restoring(hs.waterplane, hs.volume, hs.z_b, loading.z_g, water=water)
+    return m6[1:, 1:], c6[1:, 1:]
 
 
-def _frequency_grid(omega_e, n, floor):
-    """The section solve's frequencies: ``omega_e`` itself where it holds few values, else
-    ``n`` geometrically spaced between its smallest and largest magnitude (at least
-    ``floor``); with the linear-interpolation index and weight of every |ω_e|."""
-    mag = np.abs(np.asarray(omega_e, float)).ravel()
-    lo, hi = max(mag.min(), floor), max(mag.max(), floor * 1.01)
-    grid = np.unique(mag) if n is None or np.unique(mag).size <= n else np.geomspace(lo, hi, n)
-    grid = np.maximum(grid, floor)
+def _loading(hull: Hull, loading: Loading | None) -> Loading:
+    if loading is None:
+        return Loading.estimate(hull.draft)
+    check_type("loading", loading, Loading)
+    return loading
+
+
+def _floor(hull: Hull, water: Water):
+    return LOW_FREQUENCY * jnp.sqrt(water.g / hull.length)
+
+
+def plan_sections(hull: Hull, omega, beta, speeds, *, n_frequencies: int = 40, water=SEA_WATER):
+    """The encounter-frequency grid [rad/s] of a `SectionTable` that spans the encounter
+    frequencies of ``omega`` × ``beta`` at every speed of ``speeds`` [m/s] (numbers, on the
+    host): ``n_frequencies`` geometrically spaced over their range (at least the low limit
+    0.3√(g/L)), or the distinct values themselves when there are no more. Build the table
+    with `jaxtow.strip.section_table` and pass it to `motions` and `added_resistance` at
+    each speed and heading."""
+    w = np.atleast_1d(np.asarray(omega, float))
+    b = np.atleast_1d(np.asarray(beta, float))
+    u = np.atleast_1d(np.asarray(speeds, float))
+    we = np.abs(
+        np.asarray(encounter_frequency(w[:, None, None], b[None, :, None], u[None, None, :]))
+    )
+    return _grid(we.ravel(), float(_floor(hull, water)), n_frequencies)
+
+
+def _grid(mag, floor, n):
+    """The host plan of `plan_sections` over the magnitudes ``mag`` of the encounter
+    frequencies."""
+    unique = np.unique(np.maximum(mag, floor))
+    if n is None or unique.size <= n:
+        grid = unique
+    else:
+        lo, hi = max(mag.min(), floor), max(mag.max(), floor * 1.01)
+        grid = np.maximum(np.geomspace(lo, hi, n), floor)
     if grid.size == 1:
         grid = np.array([grid[0], grid[0] * 1.01])
-    q = np.clip(mag, grid[0], grid[-1])
-    i = np.clip(np.searchsorted(grid, q) - 1, 0, grid.size - 2)
-    t = (q - grid[i]) / (grid[i + 1] - grid[i])
-    return grid, i, t, mag >= grid[0] * (1 - 1e-12)
+    return grid
 
 
-def _mass_matrix(mass, x_g, z_g, radii):
-    kxx, kyy, kzz = radii
-    m = jnp.zeros((5, 5))
-    m = m.at[0, 0].set(mass).at[1, 1].set(mass)
-    m = m.at[0, 2].set(-mass * z_g).at[2, 0].set(-mass * z_g)
-    m = m.at[0, 4].set(mass * x_g).at[4, 0].set(mass * x_g)
-    m = m.at[1, 3].set(-mass * x_g).at[3, 1].set(-mass * x_g)
-    m = m.at[2, 2].set(mass * (kxx**2 + z_g**2))
-    m = m.at[3, 3].set(mass * (kyy**2 + x_g**2 + z_g**2))
-    return m.at[4, 4].set(mass * (kzz**2 + x_g**2))
+def _traced_grid(mag, floor, n):
+    """The geometric grid of `plan_sections` over traced magnitudes (held out of the
+    derivatives)."""
+    mag = jax.lax.stop_gradient(mag)
+    floor = jax.lax.stop_gradient(floor)
+    lo = jnp.maximum(jnp.min(mag), floor)
+    hi = jnp.maximum(jnp.maximum(jnp.max(mag), floor * 1.01), lo * 1.01)
+    return lo * (hi / lo) ** jnp.linspace(0.0, 1.0, n)
 
 
-def _restoring(hs, mass, z_g, rho, g):
-    lever = rho * g * hs["volume"] * (hs["z_b"] - z_g)
-    c = jnp.zeros((5, 5))
-    c = c.at[1, 1].set(hs["c33"]).at[1, 3].set(hs["c35"]).at[3, 1].set(hs["c35"])
-    c = c.at[2, 2].set(hs["c44"] + lever)
-    return c.at[3, 3].set(hs["c55"] + lever)
+def _check_inputs(omega, beta, u, n_frequencies):
+    for rule, name, v in ((POSITIVE, "omega", omega), (FINITE, "beta", beta)):
+        rule.check(name, v)
+        if jnp.ndim(v) > 1:
+            raise ValueError(f"parameter {name!r} must be a scalar or a 1-D array")
+    NONNEGATIVE.check("u", u)
+    if n_frequencies is not None and int(n_frequencies) < 2:
+        raise ValueError(f"parameter 'n_frequencies' must be >= 2, got {n_frequencies!r}")
+    return [
+        POSITIVE.traced("omega", omega),
+        FINITE.traced("beta", beta),
+        NONNEGATIVE.traced("u (forward speed)", u),
+    ]
 
 
-def _sections_at(hull, omega_e, n_encounter, rho, g):
-    """Section coefficients, radiation potentials and beam-sea heave exciting forces of every
-    station at |ω_e| (m,), linearly interpolated from a solve on `_frequency_grid`; the
-    complex ones conjugated where ω_e < 0 (the radiated waves of the reversed time
-    dependence)."""
-    length = float(jnp.sum(hull.dx))
-    grid, i, t, inside = _frequency_grid(omega_e, n_encounter, 0.3 * np.sqrt(g / length))
-    secs = jax.vmap(lambda y, z: section_coefficients(y, z, jnp.asarray(grid), rho=rho, g=g))(
-        hull.y, hull.z
-    )
+def solve_motions(
+    hull: Hull,
+    omega,
+    beta,
+    u=0.0,
+    *,
+    loading: Loading | None = None,
+    sections: SectionTable | None = None,
+    water: Water = SEA_WATER,
+    n_frequencies: int | None = 40,
+) -> MotionSolve:
+    """`motions` with the solve's internals for the added resistance (`MotionSolve`)."""
+    check_type("hull", hull, Hull)
+    omega = jnp.atleast_1d(jnp.asarray(omega, dtype=float))
+    beta = jnp.atleast_1d(jnp.asarray(beta, dtype=float))
+    checks = _check_inputs(omega, beta, u, n_frequencies)
+    loading = _loading(hull, loading)
+    if sections is not None:
+        check_type("sections", sections, SectionTable)
+        if sections.potentials.shape[0] != hull.x.shape[0]:
+            raise ValueError(
+                f"parameter 'sections': a table of {sections.potentials.shape[0]} stations for "
+                f"a hull of {hull.x.shape[0]}"
+            )
+    nw, nb = omega.shape[0], beta.shape[0]
+    w_flat, b_flat = jnp.repeat(omega, nb), jnp.tile(beta, nw)
+    we_true = encounter_frequency(w_flat, b_flat, u, g=water.g)
+    floor = _floor(hull, water)
+    index = None
+    if sections is None:
+        static_zero = is_concrete(u) and float(u) == 0.0
+        if static_zero:  # the frequencies themselves, each table entry exactly
+            sections = section_table(hull, jnp.maximum(omega, floor), water=water)
+            index = jnp.repeat(jnp.arange(nw), nb)
+        elif holds_tracers((hull, omega, beta, u)) or n_frequencies is None:
+            n = 40 if n_frequencies is None else int(n_frequencies)
+            grid = _traced_grid(jnp.abs(we_true), floor, n)
+            sections = section_table(hull, grid, water=water)
+        else:
+            grid = _grid(np.abs(np.asarray(we_true)), float(floor), n_frequencies)
+            sections = section_table(hull, grid, water=water)
+    out = _solve(hull, omega, beta, u, we_true, floor, sections, index, loading, water)
+    return guard(out, checks + hull.checks() + loading.checks())
 
-    def at(v):  # (n, G, ...) -> (n, m, ...)
-        tt = jnp.asarray(t).reshape((1, -1) + (1,) * (v.ndim - 2))
-        return v[:, i] * (1 - tt) + v[:, i + 1] * tt
 
-    neg = jnp.asarray(np.asarray(omega_e) < 0)[None, :]
-    pots = at(secs.potentials)
-    pots = jnp.where(neg[..., None, None], jnp.conj(pots), pots)
-    x3 = at(secs.exciting[..., 1])
-    x3 = jnp.where(neg, jnp.conj(x3), x3)
-    return at(secs.added_mass), at(secs.damping), pots, x3, inside
-
-
-def _motion_solve(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g):
-    w_flat = jnp.repeat(omega, beta.shape[0])
-    b_flat = jnp.tile(beta, omega.shape[0])
-    we_true = encounter_frequency(w_flat, b_flat, u, g)
-    length = float(jnp.sum(hull.dx))
-    floor = 0.3 * np.sqrt(g / length)  # below it: invalid (`valid`)
+def _solve(hull, omega, beta, u, we_true, floor, sections, index, loading, water):
+    nw, nb = omega.shape[0], beta.shape[0]
+    w_flat, b_flat = jnp.repeat(omega, nb), jnp.tile(beta, nw)
+    g = water.g
     # an encounter frequency of zero (following seas) is moved off zero for the solve, so
     # that the results stay finite (and marked invalid), not NaN
     tiny = 1e-3 * floor
     we = jnp.where(jnp.abs(we_true) < tiny, jnp.where(we_true < 0, -tiny, tiny), we_true)
-    n_grid = None if u == 0 else n_encounter  # at zero speed: the frequencies themselves
-    a, b, pots, x3, inside = _sections_at(hull, np.asarray(we), n_grid, rho, g)
+    a, b, pots, x3, inside = sections.lookup(we, index)
     c = 1j * u / we
     t = we[None, :, None, None] ** 2 * a + 1j * we[None, :, None, None] * b
-    tm = _radiation(t, hull.x, hull.dx, c, hull.transom)  # (m, 5, 5)
+    tm = radiation(t, hull.x, hull.dx, c, hull.transom)  # (m, 5, 5)
     added = jnp.real(tm) / we[:, None, None] ** 2
     damping = jnp.imag(tm) / we[:, None, None]
     k_cos = -(w_flat**2) / g * jnp.cos(b_flat)  # k cos χ
-    f, fk3 = _exciting(hull, pots, w_flat, b_flat, c, k_cos, rho, g)
-    mm, cc = rigid_body_matrices(hull, z_g=z_g, x_g=x_g, radii=radii, rho=rho, g=g)
-    i44 = mm[2, 2] + added[:, 2, 2]
-    crit = i44 * cc[2, 2]  # no critical damping where the hull has no roll stability
-    bv = 2.0 * roll_damping * jnp.where(crit > 0, jnp.sqrt(jnp.where(crit > 0, crit, 1.0)), 0.0)
+    f, fk3 = exciting(hull, pots, w_flat, b_flat, c, k_cos, water)
+    mm, cc = rigid_body_matrices(hull, loading, water=water)
+    bv = roll_damping_coefficient(loading.roll_damping, cc[2, 2], mm[2, 2] + added[:, 2, 2])
     damping_v = damping.at[:, 2, 2].add(bv)
     h = -(we[:, None, None] ** 2) * (mm + added) - 1j * we[:, None, None] * damping_v + cc
     rao = jnp.linalg.solve(h, f[..., None])[..., 0]
-    resolved = jnp.asarray(inside) & (jnp.abs(we_true) >= floor * (1 - 1e-12))
-    valid = resolved & (u / np.sqrt(g * length) <= FROUDE_LIMIT * (1 + 1e-9))
-    return dict(
-        we=we_true,
-        we_solved=we,
-        rao=rao,
-        added=added,
-        damping=damping,
-        f=f,
-        valid=valid,
-        fk3=fk3,
-        a=a,
-        b=b,
-        x3=x3,
+    resolved = inside & (jnp.abs(we_true) >= floor * (1 - 1e-12))
+    valid = resolved & (u / jnp.sqrt(g * hull.length) <= FROUDE_LIMIT * (1 + 1e-9))
+    shape = (nw, nb)
+    m = Motions(
+        omega=omega,
+        beta=beta,
+        u=jnp.asarray(u, float),
+        omega_e=we_true.reshape(shape),
+        rao=rao.reshape(shape + (5,)),
+        added_mass=added.reshape(shape + (5, 5)),
+        damping=damping.reshape(shape + (5, 5)),
+        exciting=f.reshape(shape + (5,)),
+        valid=valid.reshape(shape),
+        loading=loading,
     )
-
-
-def _inputs(hull, omega, beta, u, radii, roll_damping):
-    omega = np.atleast_1d(np.asarray(omega, dtype=float))
-    beta = np.atleast_1d(np.asarray(beta, dtype=float))
-    if omega.ndim != 1 or not np.all(np.isfinite(omega)) or np.any(omega <= 0):
-        raise ValueError(f"parameter 'omega' must be a 1-D array of frequencies > 0, got {omega}")
-    if beta.ndim != 1 or not np.all(np.isfinite(beta)):
-        raise ValueError(f"parameter 'beta' must be a 1-D array of finite headings, got {beta}")
-    if not (np.isfinite(u) and u >= 0):
-        raise ValueError(f"parameter 'u' (forward speed) must be finite and >= 0, got {u!r}")
-    if not (np.isfinite(roll_damping) and 0 <= roll_damping < 1):
-        raise ValueError(
-            f"parameter 'roll_damping' (fraction of critical) must lie in [0, 1), got {roll_damping!r}"
-        )
-    concrete = [r for r in radii if _concrete(r)]
-    if len(radii) != 3 or not all(np.isfinite(r) and r > 0 for r in concrete):
-        raise ValueError(f"parameter 'radii' must be three radii of gyration > 0, got {radii!r}")
-    return jnp.asarray(omega), jnp.asarray(beta)
-
-
-def default_radii(hull: Hull) -> tuple[float, float, float]:
-    """(k_xx, k_yy, k_zz) [m] from `jaxtow.ASSUMPTIONS['radii_of_gyration']` (fractions of
-    the hull's beam and length; an estimate)."""
-    fx, fy, fz = ASSUMPTIONS["radii_of_gyration"]["value"]
-    length = jnp.sum(hull.dx)
-    breadth = 2.0 * jnp.max(hull.y[:, 0])
-    return fx * breadth, fy * length, fz * length
-
-
-def rigid_body_matrices(
-    hull: Hull,
-    *,
-    z_g: float = 0.0,
-    x_g=None,
-    radii=None,
-    rho: float = 1025.0,
-    g: float = 9.80665,
-):
-    """The mass and restoring matrices (5, 5) over `MODES` about the origin on the waterline
-    at midships: mass ρ∇ at (x_G, z_G) [m] (x_G default x_B), radii of gyration ``radii``
-    about G (default `default_radii`), and the hydrostatics of the strips with
-    ρg∇(z_B − z_G) in roll and pitch."""
-    radii = default_radii(hull) if radii is None else tuple(radii)
-    hs = hydrostatics(hull, rho=rho, g=g)
-    mass = rho * hs["volume"]
-    x_g = hs["x_b"] if x_g is None else x_g
-    return _mass_matrix(mass, x_g, z_g, radii), _restoring(hs, mass, z_g, rho, g)
+    return MotionSolve(
+        motions=m,
+        omega_e=we,
+        added_mass=a[..., 1, 1],
+        damping=b[..., 1, 1],
+        heave_exciting=x3,
+        heave_froude_krylov=fk3,
+    )
 
 
 def motions(
     hull: Hull,
     omega,
     beta,
-    u: float = 0.0,
+    u=0.0,
     *,
-    z_g: float = 0.0,
-    x_g=None,
-    radii=None,
-    roll_damping: float | None = None,
-    n_encounter: int = 40,
-    rho: float = 1025.0,
-    g: float = 9.80665,
+    loading: Loading | None = None,
+    sections: SectionTable | None = None,
+    water: Water = SEA_WATER,
+    n_frequencies: int | None = 40,
 ) -> Motions:
     """Strip-theory RAOs with forward speed (module docstring) at wave frequencies ``omega``
     [rad/s] and headings ``beta`` [rad] (waves from; 0 head seas), speed ``u`` [m/s] ≥ 0.
 
-    ``z_g``: the centre of gravity's height above the waterline [m] (default 0, the
-    waterline); ``x_g``: its x [m] (default: the centre of buoyancy's); ``radii``: (k_xx,
-    k_yy, k_zz) about G [m] (default `default_radii`, an estimate); ``roll_damping``: the
-    linear viscous roll damping as a fraction of critical (default
-    `jaxtow.ASSUMPTIONS['roll_damping']`, an estimate). The sections are solved at
-    ``n_encounter`` encounter frequencies spanning the table and interpolated linearly
-    (at zero speed, or where the table has no more distinct encounter frequencies, at the
-    frequencies themselves); frequencies below 0.3√(g/L) are held there and marked
-    invalid. ``omega``, ``beta`` and ``u`` are data (not traced);
-    the result is differentiable in the hull's offsets and the mass properties."""
-    return _motions(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g)[0]
-
-
-def _motions(hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g):
-    """(`Motions`, the solve's internals for the added resistance)."""
-    if not isinstance(hull, Hull):
-        raise TypeError(f"parameter 'hull' must be a jaxtow.strip.Hull, got {type(hull).__name__}")
-    radii = default_radii(hull) if radii is None else tuple(radii)
-    if roll_damping is None:
-        roll_damping = float(ASSUMPTIONS["roll_damping"]["value"])
-    omega, beta = _inputs(hull, omega, beta, u, radii, roll_damping)
-    r = _motion_solve(
-        hull, omega, beta, float(u), z_g, x_g, radii, roll_damping, n_encounter, rho, g
-    )
-    shape = (omega.shape[0], beta.shape[0])
-    out = Motions(
-        omega=omega,
-        beta=beta,
-        u=float(u),
-        omega_e=r["we"].reshape(shape),
-        rao=r["rao"].reshape(shape + (5,)),
-        added_mass=r["added"].reshape(shape + (5, 5)),
-        damping=r["damping"].reshape(shape + (5, 5)),
-        exciting=r["f"].reshape(shape + (5,)),
-        valid=r["valid"].reshape(shape),
-        roll_damping=float(roll_damping),
-    )
-    return out, r
-
-
-__all__ = [
-    "MODES",
-    "FROUDE_LIMIT",
-    "Motions",
-    "motions",
-    "encounter_frequency",
-    "default_radii",
-    "rigid_body_matrices",
-]
+    ``loading``: the `jaxtow.Loading` (the CoG above the waterline, its x, the radii of
+    gyration and the roll damping; None: the documented estimate, `jaxtow.Loading.estimate`
+    at the hull's draft); ``sections``: a `SectionTable` to reuse (`plan_sections`,
+    `jaxtow.strip.section_table`; None: solved here on the planned grid of
+    ``n_frequencies``, module docstring); ``water``: ρ and g (`jaxtow.Water`). Bad values
+    raise a ValueError naming the parameter (eagerly, or `equinox.error_if` under jit)."""
+    return solve_motions(
+        hull,
+        omega,
+        beta,
+        u,
+        loading=loading,
+        sections=sections,
+        water=water,
+        n_frequencies=n_frequencies,
+    ).motions

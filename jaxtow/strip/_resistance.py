@@ -16,7 +16,7 @@ Smith's correction, and the lateral variation of oblique waves). R_AW > 0 is a r
 the radiated part: the reflection of short waves at the bow is missing from it, which is
 what the short-wave correction below adds.
 
-**The strips' far field** (``method="maruo"``, any speed): Maruo's (1960) far-field
+**The strips' far field** (``method=FarField()``, any speed): Maruo's (1960) far-field
 momentum balance with the strips as the radiating line, the slender-body idea of Joosen
 (1966). Each strip radiates 2-D waves of amplitude q = ω_e X₃ V_z/(ρg²) to each side (X₃ its
 beam-sea heave force at the encounter frequency: Haskind and the energy identity); seen from
@@ -42,61 +42,31 @@ the resistance budget, the studies) can use strip theory.
 
 from __future__ import annotations
 
+import abc
+from typing import ClassVar
+
 import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Bool, Float
 
+from .._body import Loading
+from .._rules import check_type, is_concrete
+from .._units import SEA_WATER, Water
 from ..drift import QTF, Waterline, r_function_method
 from ._hull import Hull
-from ._motions import Motions, _motions
+from ._motions import Motions, MotionSolve, solve_motions
+from ._strips import SectionTable
 
-#: the added-resistance methods by name
-METHODS = ("gerritsma_beukelman", "maruo")
-
-
-class AddedResistance(eqx.Module):
-    """Added resistance per unit wave amplitude squared ``r`` (w, b) [N/m²] (> 0 astern) at
-    wave frequencies ``omega`` (w,) [rad/s], headings ``beta`` (b,) [rad] (waves from; 0
-    head seas) and speed ``u`` [m/s], by ``method``; with the `Motions` it came from and
-    their ``valid`` mask."""
-
-    omega: Float[Array, " w"]
-    beta: Float[Array, " b"]
-    u: float = eqx.field(static=True)
-    r: Float[Array, "w b"]
-    motions: Motions
-    valid: Bool[Array, "w b"]
-    method: str = eqx.field(static=True)
-
-
-def _relative_velocity(hull: Hull, m: Motions, internals, rho, g):
-    """(V_z (n, m), k (m,), ω (m,), β (m,)): the strips' relative vertical velocity per unit
-    wave amplitude (module docstring) over the flattened (ω, β) table."""
-    nb = m.beta.shape[0]
-    w = jnp.repeat(m.omega, nb)
-    beta = jnp.tile(m.beta, m.omega.shape[0])
-    we = internals["we_solved"]
-    k = w**2 / g
-    k_cos = -k * jnp.cos(beta)  # k cos χ
-    eta3 = internals["rao"][:, 1]
-    eta5 = internals["rao"][:, 3]
-    x = hull.x[:, None]
-    breadth = 2.0 * hull.y[:, 0][:, None]
-    zeta = internals["fk3"] / (rho * g * breadth) * jnp.exp(1j * k_cos[None] * x)
-    v = -1j * we * (eta3 - x * eta5) + m.u * eta5 + 1j * w * zeta
-    return v, k, w, beta
-
-
-def _gerritsma_beukelman(hull: Hull, m: Motions, internals, rho, g):
-    v, k, _, beta = _relative_velocity(hull, m, internals, rho, g)
-    a33 = internals["a"][..., 1, 1]
-    b33 = internals["b"][..., 1, 1]
-    da_dx = jnp.asarray(jnp.gradient(a33, hull.x, axis=0))
-    b_eff = b33 - m.u * da_dx
-    power = jnp.sum(hull.dx[:, None] * b_eff * jnp.abs(v) ** 2, axis=0)  # 2 × mean power
-    return k * jnp.cos(beta) * power / (2.0 * jnp.abs(internals["we_solved"]))
+__all__ = [
+    "AbstractAddedResistanceMethod",
+    "GerritsmaBeukelman",
+    "FarField",
+    "AddedResistance",
+    "added_resistance",
+    "drift_qtf",
+]
 
 
 #: directions of the zero-speed far-field integral of `maruo` (midpoint rule over the
@@ -108,7 +78,121 @@ N_DIRECTIONS = 360
 N_NODES = 64
 
 
-def _branches(k_e, we, u, g, kappa_max=None):
+class AbstractAddedResistanceMethod(eqx.Module):
+    """A way to get the added resistance in regular waves from the strip-theory motions:
+    ``resistance(hull, solve, water)`` → (m,) [N per ζa², > 0 astern] over the flattened
+    (ω, β) table of a `MotionSolve`; ``valid(motions)`` the method's own validity (w, b)."""
+
+    name: ClassVar[str]
+
+    @abc.abstractmethod
+    def resistance(self, hull: Hull, solve: MotionSolve, water: Water): ...
+
+    def valid(self, motions: Motions):
+        return motions.valid
+
+
+class GerritsmaBeukelman(AbstractAddedResistanceMethod):
+    """Gerritsma & Beukelman (1972): the energy radiated by the strips' relative vertical
+    motion (module docstring). Any speed and heading; the radiated part only."""
+
+    name: ClassVar[str] = "gerritsma_beukelman"
+
+    def resistance(self, hull, solve, water):
+        v, k, _, beta = _relative_velocity(hull, solve, water)
+        da_dx = jnp.asarray(jnp.gradient(solve.added_mass, hull.x, axis=0))
+        b_eff = solve.damping - solve.motions.u * da_dx
+        power = jnp.sum(hull.dx[:, None] * b_eff * jnp.abs(v) ** 2, axis=0)  # 2 × mean power
+        return k * jnp.cos(beta) * power / (2.0 * jnp.abs(solve.omega_e))
+
+
+class FarField(AbstractAddedResistanceMethod):
+    """The strips' far field in Maruo's (1960) momentum balance (module docstring), with
+    ``n_directions`` midpoint directions over the circle at zero speed and ``n_nodes`` Gauss
+    nodes per interval of the wave systems at speed. Waves that overtake the ship
+    (ω_e < 0) are not built and are marked invalid."""
+
+    n_directions: int = eqx.field(static=True, default=N_DIRECTIONS)
+    n_nodes: int = eqx.field(static=True, default=N_NODES)
+    name: ClassVar[str] = "far_field"
+
+    def resistance(self, hull, solve, water):
+        rho, g = water.rho, water.g
+        v, k, _, beta = _relative_velocity(hull, solve, water)
+        we = jnp.abs(solve.omega_e)
+        u = solve.motions.u
+        # each strip's outgoing 2-D wave per unit relative velocity, by Haskind from its
+        # beam-sea heave force: |A₃| = ω_e|X₃|/(ρg²) (the energy identity b₃₃ = ω_e|X₃|²/(ρg²));
+        # the common phase factor of the relation drops out of |H|². Seen from afar the
+        # strips are a line of sources on the centreline with these strengths (slender-body
+        # matching)
+        q = we[None] / (rho * g**2) * solve.heave_exciting * v  # (n, m)
+        # a numerical limit, not physics: held out of the derivatives (its interval ends pass
+        # through arccos, whose slope is infinite where they saturate at cos θ = ±1)
+        kappa_max = jax.lax.stop_gradient(jnp.pi / jnp.max(hull.dx))
+        zero = is_concrete(u) and float(u) == 0.0
+
+        def entry(args):
+            q_j, k_j, we_j, cos_chi = args
+            amp = lambda kappa: jnp.broadcast_to(q_j[:, None], q_j.shape + kappa.shape)  # noqa: E731
+            return _far_field(
+                hull.x,
+                hull.dx,
+                amp,
+                k_j,
+                we_j**2 / g,
+                we_j,
+                cos_chi,
+                u,
+                rho,
+                g,
+                kappa_max,
+                n_directions=self.n_directions if zero else None,
+                n_nodes=self.n_nodes,
+            )
+
+        return jax.lax.map(entry, (q.T, k, we, -jnp.cos(beta)), batch_size=8)
+
+    def valid(self, motions):
+        return motions.valid & (motions.omega_e > 0)
+
+
+class AddedResistance(eqx.Module):
+    """Added resistance ``resistance`` (w, b) [N per ζa² of the incident wave, i.e. N/m²]
+    (> 0 astern) at wave frequencies ``omega`` (w,) [rad/s], headings ``beta`` (b,) [rad]
+    (waves from; 0 head seas) and speed ``u`` [m/s], by ``method``; with the `Motions` it
+    came from and the ``valid`` mask (the motions' and the method's own)."""
+
+    omega: Float[Array, " w"]
+    beta: Float[Array, " b"]
+    u: Float[Array, ""]
+    resistance: Float[Array, "w b"]
+    motions: Motions
+    valid: Bool[Array, "w b"]
+    method: AbstractAddedResistanceMethod
+
+
+def _relative_velocity(hull: Hull, solve: MotionSolve, water: Water):
+    """(V_z (n, m), k (m,), ω (m,), β (m,)): the strips' relative vertical velocity per unit
+    wave amplitude (module docstring) over the flattened (ω, β) table."""
+    m = solve.motions
+    g = water.g
+    nb = m.beta.shape[0]
+    w = jnp.repeat(m.omega, nb)
+    beta = jnp.tile(m.beta, m.omega.shape[0])
+    we = solve.omega_e
+    k = w**2 / g
+    k_cos = -k * jnp.cos(beta)  # k cos χ
+    rao = m.rao.reshape(-1, 5)
+    eta3, eta5 = rao[:, 1], rao[:, 3]
+    x = hull.x[:, None]
+    breadth = 2.0 * hull.y[:, 0][:, None]
+    zeta = solve.heave_froude_krylov / (water.rho * g * breadth) * jnp.exp(1j * k_cos[None] * x)
+    v = -1j * we * (eta3 - x * eta5) + m.u * eta5 + 1j * w * zeta
+    return v, k, w, beta
+
+
+def _branches(k_e, we, u, g, kappa_max=None, n_nodes=None):
     """The far field's wave systems at forward speed for one table entry: a list of (κ(θ),
     θ, quadrature weight) over Maruo's intervals, κ the wave numbers that meet the
     encounter frequency ω_e in the frame of the ship, (ω_e + κU cos θ)² = gκ:
@@ -141,7 +225,7 @@ def _branches(k_e, we, u, g, kappa_max=None):
         c_two = jnp.where(k2(c_top) <= kappa_max, c_top, inside)
         c_behind = jnp.clip((-root_g - we) / (kappa_max * u), -1.0, 0.0)
     alpha0 = jnp.arccos(c_top)
-    t, w = np.polynomial.legendre.leggauss(N_NODES)
+    t, w = np.polynomial.legendre.leggauss(N_NODES if n_nodes is None else n_nodes)
     t, w = 0.5 * (t + 1.0), 0.5 * w
 
     def nodes(a, b):
@@ -158,7 +242,9 @@ def _branches(k_e, we, u, g, kappa_max=None):
     return [(kf(jnp.cos(th)), th, wt) for kf, th, wt in out]
 
 
-def _far_field(x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None):
+def _far_field(
+    x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None, n_directions=None, n_nodes=None
+):
     """Mean added resistance [N per ζa², > 0 astern] by Maruo's (1960) far-field momentum
     balance, for one table entry: the waves radiated by a line of sources at ``x`` (n,) with
     lengths ``dx``, whose outgoing waves of wave number κ have amplitudes ``amp(κ)`` (n, T)
@@ -179,12 +265,12 @@ def _far_field(x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None):
     ρk²/(8π) ∫ |H|² (cos θ − cos χ) dθ. At speed, waves beyond ``kappa_max`` (None: none), a
     station spacing's Nyquist limit (the stations cannot resolve them, and they only alias),
     are left out."""
-    if u == 0:
-        theta = 2.0 * jnp.pi * (jnp.arange(N_DIRECTIONS) + 0.5) / N_DIRECTIONS
-        d_theta = jnp.full_like(theta, 2 * jnp.pi / N_DIRECTIONS)
+    if n_directions is not None:  # zero speed (a number): the midpoint rule over the circle
+        theta = 2.0 * jnp.pi * (jnp.arange(n_directions) + 0.5) / n_directions
+        d_theta = jnp.full_like(theta, 2 * jnp.pi / n_directions)
         systems = [(jnp.full_like(theta, k_e), theta, d_theta)]
     else:
-        systems = _branches(k_e, we, u, g, kappa_max)
+        systems = _branches(k_e, we, u, g, kappa_max, n_nodes)
     total = 0.0
     for kappa, theta, wt in systems:
         c = jnp.cos(theta)
@@ -200,63 +286,43 @@ def _far_field(x, dx, amp, k, k_e, we, cos_chi, u, rho, g, kappa_max=None):
     return rho / (8.0 * jnp.pi) * total
 
 
-def _maruo(hull: Hull, m: Motions, internals, rho, g):
-    v, k, _, beta = _relative_velocity(hull, m, internals, rho, g)
-    we = jnp.abs(internals["we_solved"])
-    # each strip's outgoing 2-D wave per unit relative velocity, by Haskind from its
-    # beam-sea heave force: |A₃| = ω_e|X₃|/(ρg²) (the energy identity b₃₃ = ω_e|X₃|²/(ρg²));
-    # the common phase factor of the relation drops out of |H|². Seen from afar the strips
-    # are a line of sources on the centreline with these strengths (slender-body matching)
-    q = we[None] / (rho * g**2) * internals["x3"] * v  # (n, m)
-    # a numerical limit, not physics: held out of the derivatives (its interval ends pass
-    # through arccos, whose slope is infinite where they saturate at cos θ = ±1)
-    kappa_max = jax.lax.stop_gradient(jnp.pi / jnp.max(hull.dx))
-
-    def entry(args):
-        q_j, k_j, we_j, cos_chi = args
-        amp = lambda kappa: jnp.broadcast_to(q_j[:, None], q_j.shape + kappa.shape)  # noqa: E731
-        return _far_field(
-            hull.x, hull.dx, amp, k_j, we_j**2 / g, we_j, cos_chi, m.u, rho, g, kappa_max
-        )
-
-    return jax.lax.map(entry, (q.T, k, we, -jnp.cos(beta)), batch_size=8)
-
-
 def added_resistance(
     hull: Hull,
     omega,
     beta,
-    u: float = 0.0,
+    u=0.0,
     *,
-    method: str = "gerritsma_beukelman",
-    z_g: float = 0.0,
-    x_g=None,
-    radii=None,
-    roll_damping: float | None = None,
-    n_encounter: int = 40,
-    rho: float = 1025.0,
-    g: float = 9.80665,
+    method: AbstractAddedResistanceMethod | None = None,
+    loading: Loading | None = None,
+    sections: SectionTable | None = None,
+    water: Water = SEA_WATER,
+    n_frequencies: int | None = 40,
 ) -> AddedResistance:
-    """Added resistance in regular waves per ζa² [N/m²] by ``method`` (`METHODS`; module
+    """Added resistance in regular waves per ζa² [N/m²] by ``method`` (an
+    `AbstractAddedResistanceMethod`: `GerritsmaBeukelman` (default) or `FarField`; module
     docstring), from `jaxtow.strip.motions` with the same arguments. Differentiable in the
-    hull's offsets."""
-    if method not in METHODS:
-        raise ValueError(f"parameter 'method' must be one of {METHODS}, got {method!r}")
-    m, internals = _motions(
-        hull, omega, beta, u, z_g, x_g, radii, roll_damping, n_encounter, rho, g
+    hull's offsets, the loading, the speed and the frequencies; jit and vmap over hulls."""
+    method = GerritsmaBeukelman() if method is None else method
+    check_type("method", method, AbstractAddedResistanceMethod)
+    solve = solve_motions(
+        hull,
+        omega,
+        beta,
+        u,
+        loading=loading,
+        sections=sections,
+        water=water,
+        n_frequencies=n_frequencies,
     )
-    solve = _maruo if method == "maruo" else _gerritsma_beukelman
-    r = solve(hull, m, internals, rho, g)
-    valid = m.valid
-    if method == "maruo":  # the far field of waves that overtake the ship is not built
-        valid = valid & (m.omega_e > 0)
+    m = solve.motions
+    r = method.resistance(hull, solve, water)
     return AddedResistance(
         omega=m.omega,
         beta=m.beta,
         u=m.u,
-        r=r.reshape(m.valid.shape),
+        resistance=r.reshape(m.valid.shape),
         motions=m,
-        valid=valid,
+        valid=method.valid(m),
         method=method,
     )
 
@@ -267,27 +333,27 @@ def drift_qtf(
     omega,
     beta,
     *,
-    rho: float = 1025.0,
-    g: float = 9.80665,
-    **motion_options,
+    method: AbstractAddedResistanceMethod | None = None,
+    loading: Loading | None = None,
+    water: Water = SEA_WATER,
 ) -> QTF:
     """A zero-speed mean-drift `jaxtow.drift.QTF` from strip theory (module docstring) on
     ``omega`` [rad/s] × ``beta`` [rad, from 0 to π ascending], completed to ±β by the hull's
     port-starboard symmetry; ``waterline``: the hull's waterline for the short-wave
-    reflection part; ``motion_options``: those of `added_resistance` (method, z_g, radii,
-    roll_damping, ...)."""
+    reflection part; ``method``, ``loading``: those of `added_resistance`."""
     beta = np.asarray(beta, float)
     if beta.ndim != 1 or beta[0] != 0.0 or not np.isclose(beta[-1], np.pi):
         raise ValueError("parameter 'beta' must run from 0 to pi (the other half by symmetry)")
-    ar = added_resistance(hull, omega, beta, 0.0, rho=rho, g=g, **motion_options)
-    fm = jnp.stack([-ar.r, jnp.zeros_like(ar.r), jnp.zeros_like(ar.r)], axis=-1)
+    ar = added_resistance(hull, omega, beta, 0.0, method=method, loading=loading, water=water)
+    r = ar.resistance
+    fm = jnp.stack([-r, jnp.zeros_like(r), jnp.zeros_like(r)], axis=-1)
     est = r_function_method(
         waterline,
         ar.omega[:, None],
         jnp.asarray(beta)[None, :],
         motion=lambda *_: fm,
-        rho=rho,
-        g=g,
+        rho=water.rho,
+        g=water.g,
     )
     fy = np.array(est.fy)
     nz = np.array(est.nz)
@@ -295,6 +361,3 @@ def drift_qtf(
     fy[:, ends] = 0.0  # exact symmetry in head and following seas
     nz[:, ends] = 0.0
     return QTF.symmetric(omega=np.asarray(ar.omega), beta=beta, fx=np.asarray(est.fx), fy=fy, nz=nz)
-
-
-__all__ = ["METHODS", "AddedResistance", "added_resistance", "drift_qtf"]

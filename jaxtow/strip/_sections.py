@@ -75,7 +75,7 @@ class SectionCoefficients(eqx.Module):
     draft: Float[Array, ""]
 
 
-def _panels(y, z):
+def panels(y, z):
     """The half contour's panels from the waterline to the keel: ends, midpoints, lengths,
     unit tangents (complex) and normals into the fluid."""
     p = y + 1j * z
@@ -160,7 +160,7 @@ def _influence(z, normal, verts, wave, self_mask):
 def _systems(y, z, nu, n_lid):
     """The symmetric and antisymmetric influence systems (body rows: normal velocity; lid
     rows: vertical velocity just below the lid) and the potential on the body panels."""
-    _, _, mid, _, _, normal = _panels(y, z)
+    _, _, mid, _, _, normal = panels(y, z)
     n_body = mid.shape[0]
     hull = y + 1j * z
     lid = jnp.linspace(y[0], 0.0, n_lid + 1) + 0j
@@ -198,7 +198,7 @@ def _incident(mid, normal, omega, g):
 
 def _solve_one(y, z, omega, rho, g, n_lid):
     nu = omega**2 / g
-    _, _, mid, length, _, normal = _panels(y, z)
+    _, _, mid, length, _, normal = panels(y, z)
     (m_sym, p_sym), (m_anti, p_anti) = _systems(y, z, nu, n_lid)
     nx, ny = normal.real, normal.imag
     n_modes = jnp.stack([nx, ny, mid.real * ny - mid.imag * nx], axis=-1)  # sway, heave, roll

@@ -16,16 +16,30 @@ from typing import TYPE_CHECKING
 from .._lazy import attach as _attach
 
 if TYPE_CHECKING:
-    from ._advice import ADVICE_RANGES as ADVICE_RANGES, yaw_advice as yaw_advice
+    from ._advice import (
+        ADVICE_RANGES as ADVICE_RANGES,
+        advice as advice,
+        seabed_advice as seabed_advice,
+        skeg_advice as skeg_advice,
+        tug_advice as tug_advice,
+        yaw_advice as yaw_advice,
+    )
     from ._assessment import (
-        VERDICTS as VERDICTS,
+        OperatingCurve as OperatingCurve,
         TowStudy as TowStudy,
+        map_grids as map_grids,
         tow_study as tow_study,
-        verdict as verdict,
     )
     from ._bifurcation import (
         BifurcationStudy as BifurcationStudy,
         bifurcation_study as bifurcation_study,
+    )
+    from ._calm import (
+        CalmRecord as CalmRecord,
+        CalmStudy as CalmStudy,
+        TimeDomainRun as TimeDomainRun,
+        calm_study as calm_study,
+        time_domain_run as time_domain_run,
     )
     from ._claims import (
         BAND_OMEGA_MAX as BAND_OMEGA_MAX,
@@ -43,6 +57,19 @@ if TYPE_CHECKING:
         small_waves_add_no_equilibria as small_waves_add_no_equilibria,
         time_domain_agrees_with_linear as time_domain_agrees_with_linear,
         waves_reduce_path_width as waves_reduce_path_width,
+    )
+    from ._conditions import (
+        BOUND_FORMS as BOUND_FORMS,
+        SPEED_FLAGS as SPEED_FLAGS,
+        VALIDITY_WORDS as VALIDITY_WORDS,
+        YAW_VERDICTS as YAW_VERDICTS,
+        condition as condition,
+        yaw_verdict as yaw_verdict,
+    )
+    from ._criteria import (
+        UNDETERMINING_FLAGS as UNDETERMINING_FLAGS,
+        assessment as assessment,
+        weather_pull as weather_pull,
     )
     from ._drift import (
         SWAY_METHODS as SWAY_METHODS,
@@ -65,10 +92,29 @@ if TYPE_CHECKING:
         verdict_change as verdict_change,
         verdict_maps as verdict_maps,
     )
+    from ._records import (
+        CHECK_VERDICTS as CHECK_VERDICTS,
+        VERDICTS as VERDICTS,
+        AdviceRow as AdviceRow,
+        Assessment as Assessment,
+        Bounds as Bounds,
+        CheckRow as CheckRow,
+        Condition as Condition,
+        EquilibriumRow as EquilibriumRow,
+        OperatingRow as OperatingRow,
+        ResistanceRow as ResistanceRow,
+        StudySummary as StudySummary,
+        to_json as to_json,
+    )
+    from ._report import (
+        WaveReport as WaveReport,
+        source_key as source_key,
+        wave_report as wave_report,
+    )
     from ._resistance import (
         BUDGET_TP as BUDGET_TP,
         ResistanceStudy as ResistanceStudy,
-        evaluate as evaluate_resistance,
+        evaluate_resistance as evaluate_resistance,
         resistance_study as resistance_study,
         resistance_table as resistance_table,
     )
@@ -85,60 +131,5 @@ if TYPE_CHECKING:
         slow_drift_runs as slow_drift_runs,
     )
 
-__all__ = [
-    "BifurcationStudy",
-    "bifurcation_study",
-    "SWAY_METHODS",
-    "DriftMethodsStudy",
-    "drift_methods_study",
-    "forms_table",
-    "sailing_forms",
-    "MAP_NAMES",
-    "map_axes",
-    "run_map",
-    "straight",
-    "outside_validity",
-    "validity_share",
-    "verdict_change",
-    "verdict_maps",
-    "nearest_straight",
-    "valid_count",
-    "CLAIM_IDS",
-    "MODEL_ESTIMATES",
-    "PANEL_ESTIMATES",
-    "RESISTANCE_CLAIM_IDS",
-    "SHARE_TOLERANCE",
-    "THESIS_SAILING_SHARES",
-    "THESIS_STATIONARY_WAVE_SHARE",
-    "WaveStudy",
-    "attribute",
-    "slow_drift_runs",
-    "BAND_OMEGA_MAX",
-    "LOW_OMEGA",
-    "PATH_WIDTH_FACTOR",
-    "SMALL_ZETA_A",
-    "THESIS_PATH_WIDTHS",
-    "barge_2b_stays_stable",
-    "claim",
-    "head_wind_reduces_path_width",
-    "irregular_sea_keeps_2a_stable",
-    "low_frequency_waves_keep_calm_verdict",
-    "moderate_waves_stabilise_2a",
-    "path_widths_match_thesis",
-    "small_waves_add_no_equilibria",
-    "time_domain_agrees_with_linear",
-    "waves_reduce_path_width",
-    "evaluate_resistance",
-    "resistance_table",
-    "BUDGET_TP",
-    "ResistanceStudy",
-    "resistance_study",
-    "VERDICTS",
-    "TowStudy",
-    "tow_study",
-    "ADVICE_RANGES",
-    "yaw_advice",
-    "verdict",
-]
 
-__getattr__, __dir__ = _attach(__name__, __file__)
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)

@@ -14,7 +14,7 @@ import numpy as np
 
 from .._units import RHO_SEA, G
 from ..drift import (
-    METHODS,
+    WATERLINE_METHODS,
     Waterline,
     compare_methods,
     irregular_drift,
@@ -76,7 +76,7 @@ def zone_mse(ds, component: str, base: str) -> dict:
 def _irregular(wl, hs: float, b_sway: float) -> dict:
     out = {}
     tp = jnp.asarray(TP)
-    for name in METHODS:
+    for name in WATERLINE_METHODS:
         f = jax.jit(
             jax.vmap(
                 lambda t, b, n=name: irregular_drift(n, wl, hs, t, b, **OPTIONS.get(n, {})),
@@ -94,7 +94,7 @@ def _sailing(wl, omega, b_sway: float, speeds) -> dict:
     for tag, beta in (("surge", 0.0), ("sway", b_sway)):
         out[tag] = {}
         for name in ["faltinsen", "faltinsen_thesis", *SWAY_METHODS[1:]]:
-            fn = METHODS["faltinsen" if name == "faltinsen_thesis" else name]
+            fn = WATERLINE_METHODS["faltinsen" if name == "faltinsen_thesis" else name]
             dss = []
             for s in speeds:
                 uv = (s, 0.0) if tag == "surge" else (0.0, s)
@@ -130,12 +130,12 @@ def drift_methods_study(
     hs: float = 5.0,
     speeds=(0.0, 1.0, 2.0, 3.0),
 ) -> DriftMethodsStudy:
-    """Every waterline method of `jaxtow.drift.METHODS` on ``wl``: regular waves from 0.2
+    """Every waterline method of `jaxtow.drift.WATERLINE_METHODS` on ``wl``: regular waves from 0.2
     rad/s to ``omega_max`` at rest, head and oblique (``sway_heading_deg``); JONSWAP seas of
     ``hs`` over `TP`; forward ``speeds`` [m/s]. Errors are relative to ``base``."""
-    if base not in METHODS:
+    if base not in WATERLINE_METHODS:
         raise ValueError(
-            f"parameter 'base': {base!r} is not a drift method; choose from {sorted(METHODS)}"
+            f"parameter 'base': {base!r} is not a drift method; choose from {sorted(WATERLINE_METHODS)}"
         )
     omega = jnp.linspace(0.2, omega_max, n_omega)
     b_sway = math.radians(sway_heading_deg)
@@ -155,7 +155,7 @@ def drift_methods_study(
         block_coefficient=float(wl.block_coefficient),
         base=base,
         assumptions="Barge 2 rake and drafts: jaxtow.presets.ASSUMPTIONS; garbled formulas: "
-        "see jaxtow.drift.METHODS docstrings",
+        "see jaxtow.drift.WATERLINE_METHODS docstrings",
         regular_relative_mse_by_zone=dict(
             surge=zone_mse(head, "fx", base), sway=zone_mse(oblique, "fy", base)
         ),

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._equilibrium import straight_behind
 from .._results import sweep
 from .._stability import classify
 from ..presets import barge2_irregular_model, barge2_wave_model
@@ -139,12 +140,12 @@ def verdict_change(a, b) -> dict:
 
 
 def nearest_straight(arrays: dict, field: str = "max_real"):
-    """``field`` of the valid equilibrium nearest ψ = 0 at every sweep point (NaN where none):
-    the thesis's position 3 (straight behind) when it exists."""
-    psi = np.where(arrays["valid"], np.abs(arrays["psi"]), np.inf)
-    k = np.argmin(psi, axis=-1)
-    out = np.take_along_axis(np.asarray(arrays[field], float), k[..., None], -1)[..., 0]
-    return np.where(np.isfinite(np.min(psi, axis=-1)), out, np.nan)
+    """``field`` of the straight-behind equilibrium (`jaxtow.straight_behind`: the valid one
+    nearest ψ = 0, within `jaxtow.STRAIGHT_LIMIT`) at every sweep point, NaN where none: the
+    thesis's position 3."""
+    mask = straight_behind(np.asarray(arrays["psi"]), np.asarray(arrays["valid"], bool))
+    vals = np.where(mask, np.asarray(arrays[field], float), np.nan)
+    return np.where(mask.any(axis=-1), np.nansum(np.where(mask, vals, 0.0), axis=-1), np.nan)
 
 
 def valid_count(arrays: dict):

@@ -1,6 +1,6 @@
 """One sea state's resistance summary: what ``jaxtow resistance`` tabulates and ``jaxtow
-study`` reports (required bollard pull at zero speed, the worst Tp, the operating speed and
-transit time; SI)."""
+study`` reports (required bollard pull at zero speed, the worst Tp, the operating speed, the
+pull the tug gives there and the transit time; SI), as typed `ResistanceRow` records."""
 
 from __future__ import annotations
 
@@ -13,54 +13,57 @@ import jax.numpy as jnp
 import numpy as np
 
 from .. import resistance
+from .._units import KNOT, TONNE_FORCE
 from ..io import resistance_dataset
-from ..resistance._budget import OVERTAKEN_TOL
+from ..resistance import OVERTAKEN_TOL
 from ..waves import physical_tp_range
+from ._records import ResistanceRow
 
 
-def evaluate(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> dict:
-    """Everything the table prints for one sea state (SI)."""
-
+def evaluate_resistance(tow, tug, sea, heading, route_length, *, n_tp: int = 41) -> ResistanceRow:
+    """Everything the resistance table prints for one sea state (SI): a `ResistanceRow`."""
     req = resistance.required_pull(tow, sea, heading=heading, tug=tug)
-    out = dict(
+    row = dict(
         sea_state=sea.name,
         hs=float(sea.hs),
         tp=float(sea.tp),
         wind_speed=float(sea.wind_speed),
         current_speed=float(sea.current_speed),
-        hold_resistance=dict(zip(resistance.COMPONENTS, map(float, req.budget.resistance))),
+        efficiency=float(tug.efficiency),
+        hold=dict(zip(resistance.COMPONENTS, map(float, req.budget.resistance))),
         hold_towing_force=float(req.towing_force),
         required_bollard_pull=float(req.bollard_pull),
     )
     if float(sea.hs) > 0:
         bp, tp = worst_over_tp(tow, sea, heading=heading, tug=tug, n_tp=n_tp)
-        out.update(
+        row.update(
             physical_tp_range=[float(t) for t in physical_tp_range(float(sea.hs))],
             worst_tp=tp,
             worst_required_bollard_pull=bp,
         )
     p = resistance.operating_speed(tow, tug, sea, heading=heading, throw=False)
-    msg = resistance.status_message(p, tug, tow)
+    msg = resistance.status_message(p, tug, tow) or ""
     names = ("successful", "cannot_hold", "no_crossing", "froude_too_high")
     status = next(n for n in names if bool(p.result == getattr(resistance.RESULTS, n)))
-    out.update(status=status, message=msg)
+    row.update(status=status, message=msg)
     if status in ("successful", "froude_too_high"):
-        out.update(
-            operating_speed=float(p.speed),
+        speed = float(p.speed)
+        row.update(
+            operating_speed=speed,
             froude=float(p.froude),
-            pull=float(p.pull),
+            available_pull=float(p.pull) - float(tug.resistance(speed)),
             operating_resistance=dict(zip(resistance.COMPONENTS, map(float, p.budget.resistance))),
             overtaken_energy=float(p.budget.overtaken_energy),
         )
         if float(p.budget.overtaken_energy) > OVERTAKEN_TOL:
-            out["message"] = str(msg) + (
+            row["message"] = msg + (
                 f" WARNING: the tow overtakes {100 * float(p.budget.overtaken_energy):.1f} % "
                 "of the sea's wave energy (encounter frequency <= 0), where no drift is "
                 "counted: the wave resistance is incomplete."
             )
         if route_length:
-            out["transit_time_h"] = float(p.transit_time(route_length)) / 3600.0
-    return out
+            row["transit_time_h"] = float(p.transit_time(route_length)) / 3600.0
+    return ResistanceRow(**row)
 
 
 def worst_over_tp(tow, sea, *, heading=0.0, tug=None, n_tp: int = 41) -> tuple[float, float]:
@@ -89,44 +92,46 @@ TABLE_COLUMNS = (
     "Tp s",
     "wind m/s",
     "current m/s",
+    "tug eff.",
     "hold kN",
     "req. BP t",
     "worst BP t @Tp s",
     "U_op m/s (kn)",
     "Fn",
     "transit h",
-    "% current/wind/waves/tug at U_op",
+    "% " + "/".join(resistance.COMPONENTS) + " at U_op",
 )
 
 
-def resistance_table(rows: list) -> tuple:
-    """(columns, rows of strings) of `evaluate` records: the one table of `jaxtow
-    resistance` and the study report."""
-    tonne = 9.80665e3
+def resistance_table(rows: list[ResistanceRow]) -> tuple:
+    """(columns, rows of strings) of `ResistanceRow`s: the one table of `jaxtow resistance`
+    and the study report. The hull's share is its resistance through the water, with the
+    current where the sea state has one."""
     table = []
     for r in rows:
         worst = (
-            f"{r['worst_required_bollard_pull'] / tonne:.1f} @{r['worst_tp']:.1f}"
-            if "worst_tp" in r
+            f"{r.worst_required_bollard_pull / TONNE_FORCE:.1f} @{r.worst_tp:.1f}"
+            if r.worst_required_bollard_pull is not None and r.worst_tp is not None
             else "-"
         )
-        if "operating_speed" in r:
-            tot = sum(r["operating_resistance"].values()) or 1.0
-            shares = "/".join(f"{100 * v / tot:.0f}" for v in r["operating_resistance"].values())
-            speed = f"{r['operating_speed']:.2f} ({r['operating_speed'] / 0.514444:.1f})"
-            fn = f"{r['froude']:.3f}"
-            transit = f"{r['transit_time_h']:.0f}" if "transit_time_h" in r else "-"
+        if r.operating_speed is not None and r.operating_resistance is not None:
+            tot = sum(r.operating_resistance.values()) or 1.0
+            shares = "/".join(f"{100 * v / tot:.0f}" for v in r.operating_resistance.values())
+            speed = f"{r.operating_speed:.2f} ({r.operating_speed / KNOT:.1f})"
+            fn = f"{r.froude:.3f}" if r.froude is not None else "-"
+            transit = f"{r.transit_time_h:.0f}" if r.transit_time_h is not None else "-"
         else:
             shares = speed = fn = transit = "-"
         table.append(
             [
-                r["sea_state"],
-                f"{r['hs']:g}",
-                f"{r['tp']:g}",
-                f"{r['wind_speed']:g}",
-                f"{r['current_speed']:g}",
-                f"{r['hold_towing_force'] / 1e3:.1f}",
-                f"{r['required_bollard_pull'] / tonne:.1f}",
+                r.sea_state,
+                f"{r.hs:g}",
+                f"{r.tp:g}",
+                f"{r.wind_speed:g}",
+                f"{r.current_speed:g}",
+                f"{r.efficiency:g}",
+                f"{r.hold_towing_force / 1e3:.1f}",
+                f"{r.required_bollard_pull / TONNE_FORCE:.1f}",
                 worst,
                 speed,
                 fn,
@@ -143,7 +148,7 @@ BUDGET_TP = (5.0, 16.0, 45)
 
 @dataclass(frozen=True)
 class ResistanceStudy:
-    """What `resistance_study` computed: the table ``rows`` (one `evaluate` a sea state);
+    """What `resistance_study` computed: the table ``rows`` (one `evaluate_resistance` a sea state);
     on first use, per sea state, its budget over (speed, Tp) as a dataset (``budgets``) and
     the total resistance against the tug's pull over the tug's speeds (``curves``: speeds,
     pull, total [N])."""
@@ -152,7 +157,7 @@ class ResistanceStudy:
     tug: resistance.Tug
     seas: tuple
     heading: float
-    rows: list
+    rows: list[ResistanceRow]
 
     def tp_range(self, sea):
         """The physical Tp range of a sea state's Hs (None in calm water)."""
@@ -193,5 +198,5 @@ def resistance_study(tow, tug, seas, heading: float = 0.0, route_length=None) ->
     """The resistance budget, required pull, operating speed and transit time of ``tow`` (a
     `jaxtow.resistance.TowResistance`) behind ``tug`` in each of ``seas`` (``jaxtow
     resistance``; thesis sections 7.1-7.2, fig. 2.1)."""
-    rows = [evaluate(tow, tug, s, heading, route_length) for s in seas]
+    rows = [evaluate_resistance(tow, tug, s, heading, route_length) for s in seas]
     return ResistanceStudy(tow, tug, tuple(seas), heading, rows)

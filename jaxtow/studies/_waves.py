@@ -103,18 +103,19 @@ class WaveStudy:
 
     # ------------------------------------------------------------------ building blocks
     @cached_property
-    def _source(self):
+    def drift_source(self):
+        """The study's `jaxtow.presets.AbstractDriftSource`."""
         return drift_source(self.qtf)
 
     @property
     def drift(self):
         """The drift QTF."""
-        return self._source[0]
+        return self.drift_source.qtf()
 
     @property
     def source(self) -> str:
         """The one-line description of the drift source every record carries."""
-        d = self._source[1]
+        d = self.drift_source.describe()
         if self.draft is not None or self.factors:
             ov = ([f"draft = {self.draft} m"] if self.draft is not None else []) + [
                 f"{k} x {v:g}" for k, v in self.factors
@@ -290,7 +291,7 @@ class WaveStudy:
 
     @property
     def widths(self) -> dict:
-        return {k: float(v[2]["path_width"] or 0.0) for k, v in self.runs.items()}
+        return {k: float(v[2].path_width or 0.0) for k, v in self.runs.items()}
 
     @cached_property
     def agreement(self) -> dict:
@@ -313,7 +314,7 @@ class WaveStudy:
             e = equilibria(m)
             y = e.state[int(np.argmin(np.abs(np.asarray(e.psi))))]
             sim = simulate(m, y.at[5].add(math.radians(2.0)), t1=self.t1, n_save=1001)
-            outcome = fishtail_metrics(m, sim)["outcome"]
+            outcome = fishtail_metrics(m, sim).outcome
             agrees = (outcome == "converged") == (sign < 0)
             ok += agrees
             rows.append(
@@ -703,8 +704,8 @@ def slow_drift_runs(
             yaw_mean_deg=float(np.mean(psi[late])),
             yaw_std_deg=float(np.std(psi[late])),
             yaw_max_abs_deg=float(np.max(np.abs(psi[late]))),
-            path_width_L=float(met["path_width"] or 0.0),
-            outcome=met["outcome"],
+            path_width_L=float(met.path_width or 0.0),
+            outcome=met.outcome,
         )
         out[tag] = (m, sim, met, stats)
     return out

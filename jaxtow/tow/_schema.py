@@ -18,6 +18,11 @@ import msgspec
 import tomli_w
 from msgspec import UNSET, Meta, UnsetType
 
+from ..drift import FORMS as SAILING_FORMS
+from ..guidelines import GUIDELINES
+from ..lines import CHAIN_GRADES, LINES
+from ..presets import REGRESSIONS, SEA_STATES, VESSELS
+
 __all__ = [
     "TowFileError",
     "TowFileWarning",
@@ -28,6 +33,15 @@ __all__ = [
     "locate",
     "to_toml",
 ]
+
+
+#: The enums of the schema (a str key's choices), read from the library's own lists.
+PRESETS = tuple(VESSELS)
+FORMS = tuple(f for f in SAILING_FORMS if f != "stationary")  # the zero-speed bound only
+LINE_NAMES = tuple(LINES)
+GRADES = tuple(CHAIN_GRADES)
+SEA_STATE_NAMES = tuple(SEA_STATES)
+GUIDELINE_NAMES = tuple(GUIDELINES)
 
 
 class TowFileError(ValueError):
@@ -51,15 +65,18 @@ class TowFileWarning(UserWarning):
 class Key:
     """One key of a section: ``kind`` float | int | str | bool | floats (a list of numbers) |
     grid ([lo, hi, n]) | table (an inline table or a string) | tables (a list of inline
-    tables); ``rule`` positive |
-    nonnegative | finite | unit (0 < x ≤ 1) | None; ``units`` and ``doc`` for the template and
-    the docs; ``default`` (None: no default)."""
+    tables); ``rule`` positive | nonnegative | finite | unit (0 < x ≤ 1) | None; ``choices``
+    the values a str key may take (an enum: refused otherwise, with the list); ``units`` and
+    ``doc`` for the template and the docs; ``default`` (None: no default); ``deprecated``
+    the key that replaces it (a warning when given)."""
 
     kind: str
     doc: str
     units: str = "-"
     rule: str | None = None
     default: object = None
+    choices: tuple = ()
+    deprecated: str | None = None
 
 
 def _keys(**kw) -> dict:
@@ -80,7 +97,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
         ),
     ),
     "vessel": _keys(
-        preset=Key("str", "a built-in manoeuvring model: barge_2a | barge_2b"),
+        preset=Key("str", "a built-in manoeuvring model: barge_2a | barge_2b", choices=PRESETS),
         length=Key("float", "length L (the model's length scale)", "m", "positive"),
         breadth=Key("float", "breadth B", "m", "positive"),
         draft=Key("float", "draft T (default for a preset: the documented 5.0 m)", "m", "positive"),
@@ -96,6 +113,7 @@ SCHEMA: dict[str, dict[str, Key]] = {
             "clarke | kijima: the linear regression for the derivatives left out; given "
             "without [vessel.derivatives], every parameter is estimated from L, B, T and C_B "
             "(jaxtow.presets.particulars_derivatives)",
+            choices=REGRESSIONS,
         ),
         skegs=Key(
             "table",
@@ -131,7 +149,10 @@ SCHEMA: dict[str, dict[str, Key]] = {
             "frequency and cached beside the tow file",
         ),
         sailing_form=Key(
-            "str", "forward-speed form of the drift: aranha | linear | thesis", default="aranha"
+            "str",
+            "forward-speed form of the drift: aranha | linear | thesis",
+            default="aranha",
+            choices=FORMS,
         ),
         wind_table=Key(
             "str",
@@ -146,21 +167,35 @@ SCHEMA: dict[str, dict[str, Key]] = {
         length=Key("float", "unstretched towline length (instead of l0)", "m", "positive"),
         xp=Key("float", "attachment point x_p' ahead of the CoG (by L)", "L", "finite"),
         xp_m=Key("float", "attachment point ahead of the CoG (instead of xp)", "m", "finite"),
-        yp=Key("float", "attachment point y_p' to starboard (by L)", "L", "finite", 0.0),
-        EA=Key("float", "axial stiffness EA", "N", "positive"),
-        EA_nd=Key("float", "axial stiffness EA' = EA / (½ρTLU²) (instead of EA)", "-", "positive"),
+        yp=Key("float", "attachment point y_p' to port (by L)", "L", "finite", 0.0),
+        EA_N=Key("float", "axial stiffness EA in newtons", "N", "positive"),
+        EA_nd=Key(
+            "float", "axial stiffness EA' = EA / (½ρTLU²) (instead of EA_N)", "-", "positive"
+        ),
+        EA=Key(
+            "float",
+            "deprecated spelling of EA_N (newtons): EA alone is ambiguous beside the "
+            "model's non-dimensional EA'",
+            "N",
+            "positive",
+            deprecated="EA_N",
+        ),
         line=Key(
             "str",
             "a catalogue line (jaxtow.lines): wire | wire-fc | wire-spiral | chain | chain-studlink | nylon "
-            "| polyester; its EA, weight and MBL come from diameter_mm (EA or weight given "
+            "| polyester; its EA, weight and MBL come from diameter_mm (EA_N or weight given "
             "here replace the catalogue's)",
+            choices=LINE_NAMES,
         ),
         diameter_mm=Key("float", "nominal diameter of the catalogue line", "mm", "positive"),
-        grade=Key("str", "chain grade: ORQ | R3 | R3S | R4 | R4S | R5 (default R3)"),
+        grade=Key(
+            "str", "chain grade: ORQ | R3 | R3S | R4 | R4S | R5 (default R3)", choices=GRADES
+        ),
         segments=Key(
             "tables",
             "a composite line in series, from the hawser to the tug: [{line, diameter_mm, "
-            "length, grade}, ...] (lengths in m; instead of line, l0/length and EA)",
+            "length, grade}, ...] (the keys of [towline.segments] below; instead of line, "
+            "l0/length and EA_N)",
         ),
         weight=Key(
             "float",
@@ -171,14 +206,21 @@ SCHEMA: dict[str, dict[str, Key]] = {
         ),
         bridle=Key(
             "table",
-            "a symmetric bridle {x_legs, half_spread, apex_x} (by L): legs from "
-            "(x_legs, ±half_spread) to the apex, which is then the attachment point",
+            "a symmetric bridle {x_legs, half_spread, apex_x, line, diameter_mm, grade} (the "
+            "keys of [towline.bridle] below): legs from (x_legs, ±half_spread) to the apex, "
+            "which is then the attachment point",
         ),
     ),
     "tug": _keys(
         bollard_pull_t=Key("float", "bollard pull", "t", "positive"),
         free_speed=Key("float", "speed where the pull vanishes", "m/s", "positive"),
-        efficiency=Key("float", "offshore towing efficiency", "-", "unit", 1.0),
+        efficiency=Key(
+            "float",
+            "offshore towing efficiency: the share of the rated pull the tug gives in the "
+            "sea states and the weather criterion (default: the documented estimate 0.75)",
+            "-",
+            "unit",
+        ),
         resistance_coefficient=Key(
             "float",
             "the tug's own resistance c U² (0: the pull curve is net)",
@@ -200,7 +242,11 @@ SCHEMA: dict[str, dict[str, Key]] = {
         ),
     ),
     "sea_state": _keys(
-        builtin=Key("str", "a thesis sea state: survival | sailing (other keys override it)"),
+        builtin=Key(
+            "str",
+            "a thesis sea state: survival | sailing (other keys override it)",
+            choices=SEA_STATE_NAMES,
+        ),
         name=Key("str", "name in tables and the report"),
         hs=Key("float", "significant wave height (0: calm water)", "m", "nonnegative"),
         tp=Key("float", "JONSWAP peak period", "s", "positive"),
@@ -214,6 +260,12 @@ SCHEMA: dict[str, dict[str, Key]] = {
         current_angle_deg=Key(
             "float", "current from, relative to the course", "deg", "finite", 0.0
         ),
+        tug_efficiency=Key(
+            "float",
+            "the tug's efficiency in this sea state (default [tug] efficiency)",
+            "-",
+            "unit",
+        ),
     ),
     "criteria": _keys(
         guideline=Key(
@@ -221,12 +273,18 @@ SCHEMA: dict[str, dict[str, Key]] = {
             "the towing guideline the assessment checks: gl-nd-0030 | dnv-st-n001 "
             "(docs/guidelines.md); the keys below override its values",
             default="gl-nd-0030",
+            choices=GUIDELINE_NAMES,
         ),
         wind_speed=Key("float", "weather criterion: wind speed", "m/s", "nonnegative"),
         hs=Key("float", "weather criterion: significant wave height", "m", "nonnegative"),
         current_speed=Key("float", "weather criterion: current speed", "m/s", "nonnegative"),
         tug_efficiency=Key(
-            "float", "tug efficiency in the weather criterion (estimate 0.75)", "-", "unit"
+            "float",
+            "deprecated: the tug's efficiency is [tug] efficiency, one value for the sea "
+            "states and the weather criterion; given here it must equal that one",
+            "-",
+            "unit",
+            deprecated="tug.efficiency",
         ),
         length_factor=Key(
             "float", "minimum towline length = length_factor x BP/MBL", "m", "positive"
@@ -240,10 +298,16 @@ SCHEMA: dict[str, dict[str, Key]] = {
     ),
     "study": _keys(
         map_xp=Key(
-            "grid", "x_p' grid of the stability map [lo, hi, n]", "L", default=[0.0, 0.6, 25]
+            "grid",
+            "x_p' grid of the stability map [lo, hi, n] (default: the design x_p' ± 0.3 L "
+            "within 0 to 1 L, 25 points)",
+            "L",
         ),
         map_l0=Key(
-            "grid", "l0' grid of the stability map [lo, hi, n]", "L", default=[0.3, 3.0, 25]
+            "grid",
+            "l0' grid of the stability map [lo, hi, n] (default: a third to three times the "
+            "design l0', 25 points)",
+            "L",
         ),
         time_domain=Key("bool", "run the time-domain check", default=True),
         t1=Key("float", "time-domain run length (by L/U_tug)", "-", "positive", 400.0),
@@ -256,7 +320,8 @@ SCHEMA: dict[str, dict[str, Key]] = {
     ),
 }
 
-#: Sub-tables with keys of their own: [vessel.skegs] (`jaxtow.presets.Skegs`).
+#: Sub-tables with keys of their own: [vessel.skegs] (`jaxtow.presets.Skegs`), a bridle, the
+#: segments of a composite line, a hull mesh and a drift file's reading options.
 SUBTABLES: dict[str, dict[str, Key]] = {
     "vessel.skegs": _keys(
         count=Key("int", "how many identical skegs (2: twin skegs)", "-", "positive", 2),
@@ -281,6 +346,49 @@ SUBTABLES: dict[str, dict[str, Key]] = {
             "m",
             "finite",
         ),
+    ),
+    "towline.bridle": _keys(
+        x_legs=Key("float", "where the legs meet the hull, ahead of the CoG", "L", "finite"),
+        half_spread=Key("float", "half the distance between the legs' ends", "L", "positive"),
+        apex_x=Key("float", "the apex (the attachment point) ahead of the CoG", "L", "finite"),
+        line=Key("str", "the legs' catalogue line (their MBL is checked)", choices=LINE_NAMES),
+        diameter_mm=Key("float", "the legs' nominal diameter", "mm", "positive"),
+        grade=Key("str", "chain grade of the legs", choices=GRADES),
+    ),
+    "towline.segments": _keys(
+        line=Key("str", "the segment's catalogue line", choices=LINE_NAMES),
+        diameter_mm=Key("float", "its nominal diameter", "mm", "positive"),
+        length=Key("float", "its length", "m", "positive"),
+        grade=Key("str", "chain grade", choices=GRADES),
+    ),
+    "hull.mesh": _keys(
+        file=Key("str", "the mesh file (formats Capytaine reads)"),
+        method=Key(
+            "str",
+            "near_field | far_field",
+            default="near_field",
+            choices=("near_field", "far_field"),
+        ),
+        omega=Key("grid", "frequencies [lo, hi, n]", "rad/s", default=[0.05, 2.5, 61]),
+        beta_deg=Key("grid", "headings [0, 180, n]", "deg", default=[0.0, 180.0, 25]),
+        cog_z=Key(
+            "float",
+            "the CoG above the keel (default the documented estimate, 10 m)",
+            "m",
+            "nonnegative",
+        ),
+        symmetric=Key("bool", "the hull is port-starboard symmetric", default=True),
+    ),
+    "hull.drift": _keys(
+        file=Key("str", "a drift file (jaxtow, Capytaine, WAMIT .8/.9)"),
+        strip=Key("str", "an offsets file: strip theory of that hull"),
+        ulen=Key("float", "WAMIT's length scale ULEN", "m", "positive"),
+        rho=Key("float", "the file's water density", "kg/m3", "positive"),
+        g=Key("float", "the file's gravity", "m/s2", "positive"),
+        reference_point=Key("floats", "the file's moment reference point (x, y)", "m"),
+        symmetry=Key("str", "how to complete the headings: auto | none | ..."),
+        symmetry_tol=Key("float", "the symmetry check's tolerance", "-", "positive"),
+        moment_set=Key("int", "WAMIT's moment set I", "-", "positive"),
     ),
 }
 
@@ -337,8 +445,10 @@ def _reason(error: msgspec.ValidationError, value) -> str:
     return f"{text} ({value!r})" if " got " in text else f"{text}, got {value!r}"
 
 
-def _checked(key: str, kind: str, value):
-    """Rules msgspec does not state: finite numbers, a grid's hi > lo."""
+def _checked(key: str, kind: str, value, choices: tuple = ()):
+    """Rules msgspec does not state: finite numbers, a grid's hi > lo, an enum's values."""
+    if choices and value not in choices:
+        raise Invalid(f"must be one of {', '.join(map(str, choices))}, got {value!r}")
     if kind in ("float", "int") and not math.isfinite(value):
         raise Invalid(f"must be finite, got {value!r}")
     if kind == "floats" and not all(math.isfinite(x) for x in value):
@@ -358,7 +468,7 @@ def check_section(name: str, table: dict, keys: dict[str, Key] | None = None) ->
     and checked by their rules: {key: value} of the keys given; `Invalid` with the key
     otherwise (``Invalid.key``)."""
     keys = SCHEMA[name] if keys is None else keys
-    struct = _STRUCTS.get(name) if keys is SCHEMA.get(name) else section_struct(name, keys)
+    struct = _STRUCTS.get(name) if keys is SCHEMA.get(name) else _struct(name, keys)
     try:
         obj = msgspec.convert(table, struct, strict=True)
     except msgspec.ValidationError as e:
@@ -371,7 +481,7 @@ def check_section(name: str, table: dict, keys: dict[str, Key] | None = None) ->
         if v is UNSET:
             continue
         try:
-            out[k] = _checked(k, keys[k].kind, v)
+            out[k] = _checked(k, keys[k].kind, v, keys[k].choices)
         except Invalid as e:
             raise Invalid(str(e), key=k) from None
     return out
@@ -487,6 +597,41 @@ class Problems:
         warnings.warn(msg, TowFileWarning, stacklevel=4)
 
 
+def read_section(p: Problems, name: str, table, index=None) -> dict:
+    """A section read by its typed struct (`check_section`), with a suggestion for an unknown
+    key, the schema's defaults filled in and a warning for a deprecated key."""
+    path = (name,) if index is None else (name, index)
+    return _read(p, path, table, name, SCHEMA[name])
+
+
+def read_subtable(p: Problems, path: tuple, table, name: str, label: str = "") -> dict:
+    """A sub-table (`SUBTABLES`: [vessel.skegs], a bridle, a segment, a mesh, a drift file's
+    options) read as `read_section` reads a section; ``path`` locates it for the errors,
+    ``label`` starts their message (which of a list of tables)."""
+    return _read(p, path, table, name, SUBTABLES[name], label)
+
+
+def _read(p: Problems, path: tuple, table, name: str, keys: dict, label: str = "") -> dict:
+    said = f"{label}: " if label else ""
+    if not isinstance(table, dict):
+        p.error(path, f"{said}expected a table [{name}]")
+    for k in table:
+        if k not in keys:
+            close = [c for c in keys if c.lower() == k.lower() or c.startswith(k[:3])]
+            hint = f"; did you mean {close[0]!r}?" if close else ""
+            p.error(path + (k,), f"{said}unknown key{hint} (keys of [{name}]: {', '.join(keys)})")
+    try:
+        out = check_section(name, table, keys)
+    except Invalid as e:
+        p.error(path + ((e.key,) if e.key else ()), f"{said}{e}")
+    for k, key in keys.items():
+        if key.deprecated and k in out:
+            p.warn(path + (k,), f"deprecated, use {key.deprecated}: {key.doc}")
+        if k not in out and key.default is not None:
+            out[k] = list(key.default) if isinstance(key.default, list) else key.default
+    return out
+
+
 def schema_markdown() -> str:
     """The key tables of docs/towfile.md, made from `SCHEMA` (a test keeps the page equal)."""
     out = []
@@ -508,10 +653,20 @@ def schema_markdown() -> str:
                 dflt = '`""`'
             else:
                 dflt = f"`{d}`"
-            out.append(f"| `{k}` | {key.units} | {dflt} | {key.doc.replace('|', chr(92) + '|')} |")
+            doc = key.doc.replace("|", chr(92) + "|")
+            out.append(f"| `{k}` | {key.units} | {dflt} | {doc} |")
         out.append("")
     return "\n".join(out)
 
 
 #: The typed struct of each section (made from `SCHEMA`, so a key is still declared once).
 _STRUCTS = {name: section_struct(name, keys) for name, keys in SCHEMA.items()}
+_SUBSTRUCTS = {
+    name: section_struct(name.replace(".", "_"), keys) for name, keys in SUBTABLES.items()
+}
+
+
+def _struct(name: str, keys: dict):
+    if keys is SUBTABLES.get(name):
+        return _SUBSTRUCTS[name]
+    return section_struct(name.replace(".", "_"), keys)

@@ -3,48 +3,33 @@
 SI units and rad/s inside; helpers convert periods and Hz at the boundary.
 """
 
-from ._irregular import (
-    DEFAULT_OMEGA as DEFAULT_OMEGA,
-    mean_drift as mean_drift,
-    mean_drift_damping as mean_drift_damping,
-    slow_drift_force_spectrum as slow_drift_force_spectrum,
-    spectral_integral as spectral_integral,
-    synthesise_drift_force as synthesise_drift_force,
-    synthesise_elevation as synthesise_elevation,
-)
-from ._spectra import (
-    AbstractSpectrum as AbstractSpectrum,
-    Jonswap as Jonswap,
-    PiersonMoskowitz as PiersonMoskowitz,
-    check_frequency_grid as check_frequency_grid,
-    hz_to_omega as hz_to_omega,
-    jonswap as jonswap,
-    period_to_omega as period_to_omega,
-    physical_tp_range as physical_tp_range,
-    pierson_moskowitz as pierson_moskowitz,
-    spectral_moment as spectral_moment,
-    spectral_periods as spectral_periods,
-    spectrum_per_hz as spectrum_per_hz,
-)
+from typing import TYPE_CHECKING
 
-__all__ = [
-    "DEFAULT_OMEGA",
-    "mean_drift",
-    "mean_drift_damping",
-    "slow_drift_force_spectrum",
-    "spectral_integral",
-    "synthesise_drift_force",
-    "synthesise_elevation",
-    "AbstractSpectrum",
-    "Jonswap",
-    "PiersonMoskowitz",
-    "check_frequency_grid",
-    "hz_to_omega",
-    "jonswap",
-    "period_to_omega",
-    "physical_tp_range",
-    "pierson_moskowitz",
-    "spectral_moment",
-    "spectral_periods",
-    "spectrum_per_hz",
-]
+from .._lazy import attach as _attach
+
+if TYPE_CHECKING:
+    from ._irregular import (
+        DEFAULT_OMEGA as DEFAULT_OMEGA,
+        mean_drift as mean_drift,
+        mean_drift_damping as mean_drift_damping,
+        slow_drift_force_spectrum as slow_drift_force_spectrum,
+        spectral_integral as spectral_integral,
+        synthesise_drift_force as synthesise_drift_force,
+        synthesise_elevation as synthesise_elevation,
+    )
+    from ._spectra import (
+        AbstractSpectrum as AbstractSpectrum,
+        Jonswap as Jonswap,
+        PiersonMoskowitz as PiersonMoskowitz,
+        check_frequency_grid as check_frequency_grid,
+        hz_to_omega as hz_to_omega,
+        jonswap as jonswap,
+        period_to_omega as period_to_omega,
+        physical_tp_range as physical_tp_range,
+        pierson_moskowitz as pierson_moskowitz,
+        spectral_moment as spectral_moment,
+        spectral_periods as spectral_periods,
+        spectrum_per_hz as spectrum_per_hz,
+    )
+
+__getattr__, __dir__, __all__ = _attach(__name__, __file__)
