@@ -22,6 +22,7 @@ from pathlib import Path
 import jax
 import numpy as np
 
+import jaxtow as jt
 import jaxtow.strip as strip
 from jaxtow import presets
 
@@ -30,6 +31,7 @@ L, B, T = 76.2, 24.4, 5.0
 #: the panel databases' centre of gravity above the waterline (`ASSUMPTIONS['cog_z']` above
 #: the keel); their radii of gyration and roll damping are the strip defaults
 Z_G = float(presets.ASSUMPTIONS["cog_z"]["value"]) - T
+LOADING = jt.Loading(z_g=Z_G)
 OMEGA = [0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0, 1.2, 1.4, 1.7, 2.0, 2.5]
 BETA_DEG = [0.0, 45.0, 90.0, 135.0, 180.0]
 TABLE = dict(n_omega=40, n_beta=13, u=2.0)
@@ -50,10 +52,14 @@ def drift_rows():
     rows = []
     beta = np.radians(BETA_DEG)
     for name, (hull, wl) in hulls().items():
-        q = strip.drift_qtf(hull, wl, np.array(OMEGA), beta, z_g=Z_G)
-        gb = strip.added_resistance(hull, np.array(OMEGA), beta, z_g=Z_G)
-        maruo = strip.added_resistance(hull, np.array(OMEGA), beta, z_g=Z_G, method="maruo")
-        q_maruo = strip.drift_qtf(hull, wl, np.array(OMEGA), beta, z_g=Z_G, method="maruo")
+        q = strip.drift_qtf(hull, wl, np.array(OMEGA), beta, loading=LOADING)
+        gb = strip.added_resistance(hull, np.array(OMEGA), beta, loading=LOADING)
+        maruo = strip.added_resistance(
+            hull, np.array(OMEGA), beta, loading=LOADING, method=strip.FarField()
+        )
+        q_maruo = strip.drift_qtf(
+            hull, wl, np.array(OMEGA), beta, loading=LOADING, method=strip.FarField()
+        )
         panel = presets.database(name, "far_field")
         for i, w in enumerate(OMEGA):
             for j, b in enumerate(BETA_DEG):
@@ -66,8 +72,8 @@ def drift_rows():
                         beta_deg=b,
                         strip_fx=float(s[0]),
                         strip_fy=float(s[1]),
-                        gerritsma_beukelman_fx=-float(gb.r[i, j]),
-                        maruo_fx=-float(maruo.r[i, j]),
+                        gerritsma_beukelman_fx=-float(gb.resistance[i, j]),
+                        maruo_fx=-float(maruo.resistance[i, j]),
                         strip_maruo_fx=float(np.asarray(q_maruo(w, math.radians(b)))[0]),
                         panel_fx=float(p[0]),
                         panel_fy=float(p[1]),
@@ -83,17 +89,17 @@ def table_speed():
     times = []
     for rep in range(4):
         t0 = time.perf_counter()
-        ar = strip.added_resistance(hull, om + 1e-12 * rep, beta, TABLE["u"], z_g=Z_G)
-        jax.block_until_ready((ar.r, ar.motions.rao))
+        ar = strip.added_resistance(hull, om + 1e-12 * rep, beta, TABLE["u"], loading=LOADING)
+        jax.block_until_ready((ar.resistance, ar.motions.rao))
         times.append(time.perf_counter() - t0)
     warm = float(np.median(times[1:]))
     far = []
     for rep in range(2):
         t0 = time.perf_counter()
         ar = strip.added_resistance(
-            hull, om + 1e-12 * rep, beta, TABLE["u"], z_g=Z_G, method="maruo"
+            hull, om + 1e-12 * rep, beta, TABLE["u"], loading=LOADING, method=strip.FarField()
         )
-        jax.block_until_ready(ar.r)
+        jax.block_until_ready(ar.resistance)
         far.append(time.perf_counter() - t0)
     return dict(first=times[0], warm=warm, compile=times[0] - warm, maruo=far[1])
 
@@ -118,7 +124,7 @@ def rao_rows():
     beta = np.radians([0.0, 90.0])
     rakes = {"barge1": 0.0, "barge2": presets.barge2_rake(T)["extent"]}
     for name, (hull, _) in hulls().items():
-        s = np.asarray(strip.motions(hull, np.array(RAO_OMEGA), beta, z_g=Z_G).rao)
+        s = np.asarray(strip.motions(hull, np.array(RAO_OMEGA), beta, loading=LOADING).rao)
         ds = box_barge_drift(L, B, T, RAO_OMEGA, beta, loading=LOADING, rake=rakes[name]).dataset
         p = np.asarray(rao(ds))  # (omega, beta, dof)
         dofs = [str(d) for d in ds.dof.values]

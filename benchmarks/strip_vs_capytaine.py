@@ -19,6 +19,7 @@ from pathlib import Path
 import jax
 import numpy as np
 
+import jaxtow as jt
 import jaxtow.strip as strip
 from jaxtow.bem import meshes
 from jaxtow.bem.capytaine_mesh import symmetric_capytaine_mesh
@@ -89,7 +90,7 @@ def capytaine_raos(cpt, body, solver):
     `jaxtow.strip.motions` (`rigid_body_matrices`) (so the two differ by their hydrodynamics only)."""
     from capytaine.bem.airy_waves import froude_krylov_force
 
-    m5, c5 = strip.rigid_body_matrices(strip.box(L, B, T, **STRIP), z_g=Z_G)
+    m5, c5 = strip.rigid_body_matrices(strip.box(L, B, T, **STRIP), jt.Loading(z_g=Z_G))
     m = np.asarray(m5)[np.ix_([1, 3], [1, 3])]
     c = np.asarray(c5)[np.ix_([1, 3], [1, 3])]
     dofs = ("Heave", "Pitch")
@@ -117,7 +118,9 @@ def main(argv=None):
     c, compile_s, strip_s = strip_side()
     cap, cap_s, cap_raos = capytaine_side(args.panel_size)
     strip_raos = np.asarray(
-        strip.motions(strip.box(L, B, T, **STRIP), np.array(RAO_OMEGA), [0.0], z_g=Z_G).rao
+        strip.motions(
+            strip.box(L, B, T, **STRIP), np.array(RAO_OMEGA), [0.0], loading=jt.Loading(z_g=Z_G)
+        ).rao
     )[:, 0][:, [1, 3]]
     raos = [
         dict(

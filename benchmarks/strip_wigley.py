@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+import jaxtow as jt
 import jaxtow.strip as strip
 
 OUT = Path(__file__).parent / "data" / "strip" / "wigley.json"
@@ -40,12 +41,12 @@ def model_rows(name):
     k = 2 * np.pi / lam
     omega = np.sqrt(k * G)
     radii = (0.35 * breadth, K_YY, K_YY)
-    opts = dict(z_g=Z_G, radii=radii, rho=RHO, g=G)
+    opts = dict(loading=jt.Loading(z_g=Z_G, radii=radii), water=jt.Water(rho=RHO, g=G))
     rows = []
     for fn in FROUDE:
         u = fn * np.sqrt(G * L)
         gb = strip.added_resistance(hull, omega, [0.0], u, **opts)
-        far = strip.added_resistance(hull, omega, [0.0], u, method="maruo", **opts)
+        far = strip.added_resistance(hull, omega, [0.0], u, method=strip.FarField(), **opts)
         rao = np.asarray(gb.motions.rao)[:, 0]
         scale = RHO * G * breadth**2 / L  # R_aw'' = R / (ρ g ζa² B²/L)
         for i, lo in enumerate(LAMBDA_OVER_L):
@@ -58,8 +59,8 @@ def model_rows(name):
                     omega_e=float(np.asarray(gb.motions.omega_e)[i, 0]),
                     heave=float(abs(rao[i, 1])),
                     pitch=float(abs(rao[i, 3]) / k[i]),  # θa / (k ζa)
-                    raw_gerritsma_beukelman=float(np.asarray(gb.r)[i, 0] / scale),
-                    raw_maruo=float(np.asarray(far.r)[i, 0] / scale),
+                    raw_gerritsma_beukelman=float(np.asarray(gb.resistance)[i, 0] / scale),
+                    raw_maruo=float(np.asarray(far.resistance)[i, 0] / scale),
                     valid=bool(np.asarray(far.valid)[i, 0]),
                 )
             )
@@ -112,7 +113,7 @@ def panel_rows():
     ]
     ds = cpt.assemble_dataset(cpt.BEMSolver().solve_all(problems), hydrostatics=False)
     hull = strip.wigley(L, breadth, T, alpha=alpha)
-    c = strip.hull_coefficients(hull, np.array(PANEL_OMEGA), rho=RHO, g=G)
+    c = strip.hull_coefficients(hull, np.array(PANEL_OMEGA), water=jt.Water(rho=RHO, g=G))
     rows = []
     for i, w in enumerate(PANEL_OMEGA):
         for name, dof, j in (("33", "Heave", 1), ("55", "Pitch", 3)):

@@ -149,7 +149,7 @@ def _residual(psi, model: TowModel):
     return heading_residual(psi, model, throw=False)
 
 
-def _state_from_heading(psi, model: TowModel):
+def state_from_heading(psi, model: TowModel):
     """Towline angle, tension and length that balance the forces at heading ψ."""
     X, Y, _ = hull_forces_at_heading(psi, model)
     a = jnp.arctan2(Y, -X)  # γ + ψ: direction of the required towline pull
@@ -166,7 +166,7 @@ def _state_from_heading(psi, model: TowModel):
 
 
 def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
-    state, gamma, T, length = jax.vmap(_state_from_heading, in_axes=(0, None))(psi, model)
+    state, gamma, T, length = jax.vmap(state_from_heading, in_axes=(0, None))(psi, model)
     steady = _steady(model)  # the states have r = 0
     residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady, throw=False))))(
         state

@@ -7,8 +7,6 @@ from __future__ import annotations
 
 from typing import Protocol
 
-from tqdm.auto import tqdm
-
 
 class ProgressBar(Protocol):
     def update(self, n: int = 1) -> object: ...
@@ -41,6 +39,8 @@ class TqdmProgressMeter(AbstractProgressMeter):
     """A tqdm bar on stderr, one step a chunk."""
 
     def start(self, total: int, label: str) -> ProgressBar:
+        from tqdm.auto import tqdm  # a display: loaded only where a bar is shown
+
         return tqdm(total=total, desc=label, unit="chunk", leave=True)
 
 

@@ -169,7 +169,7 @@ ILLUSTRATIVE_TUG = dict(
 )
 
 # Published values, thesis Table 3.7 (Hong et al. [37], Nam et al. [51]).
-_TABLE_3_7 = {
+TABLE_3_7 = {
     "2a": dict(
         m=0.5943,
         Izz=0.0494,

@@ -36,7 +36,7 @@ import optimistix as optx
 from jaxtyping import Array
 
 from ._dynamics import TowModel
-from ._equilibrium import _state_from_heading, heading_residual
+from ._equilibrium import heading_residual, state_from_heading
 from ._parameters import check_values, get_parameter, with_parameters
 from ._roots import newton
 from ._stability import STABLE, classify, eigenvalues, max_real_eigenvalue
@@ -79,7 +79,7 @@ def straight_equilibrium(model: TowModel, psi0=0.0, *, rtol: float = 1e-12, max_
         atol=rtol,
         max_steps=max_steps,
     )
-    state = _state_from_heading(psi, model)[0]
+    state = state_from_heading(psi, model)[0]
     return state, psi, ok & jnp.isfinite(psi)
 
 

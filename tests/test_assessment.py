@@ -149,7 +149,7 @@ def test_a_thousandfold_EA_slip_is_a_named_finding():
     """EA_N = 1.65e5 (kN typed for N) for a 64 mm wire whose catalogue EA is 1.65e8 N: the
     tow loads (the values are valid one by one) with two named findings, the unit slip and a
     static stretch no line bears; `tow show` prints them."""
-    text = USER_BRIDLE.replace('diameter_mm = 64.0\n', 'diameter_mm = 64.0\nEA_N = 1.65e5\n', 1)
+    text = USER_BRIDLE.replace("diameter_mm = 64.0\n", "diameter_mm = 64.0\nEA_N = 1.65e5\n", 1)
     tow = jt.tow.loads(text, source="slip")
     keys = {f.key: f for f in tow.findings}
     assert {"EA_catalogue", "static_stretch"} <= set(keys)
@@ -166,7 +166,9 @@ def test_mass_and_speed_against_the_particulars_and_the_tug():
     assert not tow.findings  # Barge 2a: m' gives C_B 0.928
     fast = jt.tow.loads(BASE.replace("speed = 2.0", "speed = 7.5"), source="fast")
     assert any(f.key == "tug_speed" and "free speed" in f.text for f in fast.findings)
-    odd = USER_BRIDLE.replace('regression = "clarke"', 'regression = "clarke"\n[vessel.derivatives]\nm = 2.0')
+    odd = USER_BRIDLE.replace(
+        'regression = "clarke"', 'regression = "clarke"\n[vessel.derivatives]\nm = 2.0'
+    )
     tow = jt.tow.loads(odd, source="odd")
     f = next(f for f in tow.findings if f.key == "block_coefficient")
     assert "block coefficient of 3.336" in f.text
@@ -235,7 +237,15 @@ def test_yaw_criteria_are_pass_fail_not_determined():
 
 
 def _check(key, verdict, **kw):
-    return CheckRow(key=key, criterion=key, condition=kw.pop("condition", ""), kind="max", units="-", verdict=verdict, **kw)
+    return CheckRow(
+        key=key,
+        criterion=key,
+        condition=kw.pop("condition", ""),
+        kind="max",
+        units="-",
+        verdict=verdict,
+        **kw,
+    )
 
 
 def test_one_overall_verdict_and_its_sentence():
@@ -306,7 +316,9 @@ def test_the_page_opens_with_the_decision_and_shows_four_verdicts():
     checks = [
         _check("a", "pass", value=1.0, limit=2.0),
         _check("b", "fail", value=3.0, limit=2.0),
-        _check("c", "not determined", value=1.0, limit=2.0, reason="a bound gives the other answer"),
+        _check(
+            "c", "not determined", value=1.0, limit=2.0, reason="a bound gives the other answer"
+        ),
         _check("d", "not checked", reason="no make named"),
     ]
     html = jt.reports.tow_report_html(_summary(checks), {}, version="test")
@@ -326,8 +338,12 @@ def test_the_json_contract():
     """assessment.verdict; each check's verdict; assessment.operating with sea_state, speed
     (null where the tug cannot hold the tow), available_pull and towline_tension."""
     op = jt.studies.OperatingRow(
-        sea_state="survival", speed=None, available_pull=None, towline_tension=None,
-        status="cannot_hold", message="m",
+        sea_state="survival",
+        speed=None,
+        available_pull=None,
+        towline_tension=None,
+        status="cannot_hold",
+        message="m",
     )
     s = _summary([_check("a", "not checked", reason="r")])
     s = msgspec.structs.replace(s, assessment=msgspec.structs.replace(s.assessment, operating=[op]))
@@ -336,8 +352,13 @@ def test_the_json_contract():
     assert a["verdict"] in jt.studies.VERDICTS
     assert all(c["verdict"] in jt.studies.CHECK_VERDICTS for c in a["checks"])
     assert a["operating"][0] == dict(
-        sea_state="survival", speed=None, available_pull=None, towline_tension=None,
-        status="cannot_hold", message="m", transit_time_h=None,
+        sea_state="survival",
+        speed=None,
+        available_pull=None,
+        towline_tension=None,
+        status="cannot_hold",
+        message="m",
+        transit_time_h=None,
     )
     back = msgspec.json.decode(jt.studies.to_json(s), type=StudySummary)
     assert back == s  # the typed records round-trip through their JSON

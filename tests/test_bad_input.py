@@ -673,9 +673,89 @@ def test_shapes_of_tables_and_spectra_are_named(table):
     S = jt.waves.jonswap(w, hs=2.0, tp=8.0)
     with pytest.raises(ValueError, match=r"parameter 'S' must hold the spectrum on the grid"):
         jt.waves.mean_drift(w, S[:4], np.ones((6, 3)))
-    with pytest.raises(ValueError, match=r"the integrand must have the frequency grid omega \(6\)"):
+    with pytest.raises(ValueError, match=r"parameter 'P' must have the frequency grid omega \(6\)"):
         jt.waves.mean_drift(w, S, np.ones((3, 6)))
     with pytest.raises(ValueError, match=r"parameter 'T' must be > 0"):
         jt.waves.period_to_omega(0.0)
     with pytest.raises(ValueError, match=r"parameter 'S' must have a positive area"):
         jt.waves.spectral_periods(w, np.zeros(6))
+
+
+# ------------------------------------------------------------------ named, not a NaN or a crash
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (
+            lambda: jt.waves.jonswap(jnp.array([np.nan, 1.0]), hs=2.0, tp=8.0),
+            "parameter 'omega' must be >= 0",
+        ),
+        (
+            lambda: jt.waves.check_frequency_grid(np.linspace(0.1, 3.0, 100), tp=0.0),
+            "parameter 'tp' must be > 0",
+        ),
+        (
+            lambda: jt.waves.mean_drift(np.linspace(0.1, 2.0, 10), np.ones(10), np.ones(9)),
+            "parameter 'P' must have the frequency grid",
+        ),
+        (
+            lambda: jt.waves.mean_drift_damping(
+                np.linspace(0.1, 2.0, 10), np.ones(10), np.ones((9, 3, 3))
+            ),
+            "parameter 'B' must have the frequency grid",
+        ),
+        (
+            lambda: jt.drift.wave_drift_damping(
+                jt.presets.database("barge2"), omega=np.array([0.5, 0.9]), beta=0.0
+            ),
+            "parameter 'omega' must be a single value",
+        ),
+        (
+            lambda: jt.drift.waterline(
+                np.array([[0, 0], [1, 0], [1, 1], [0, 1.0], [0, 0]]), flare=np.ones(3), draft=1.0
+            ),
+            "parameter 'flare' must be one value or one per segment (4 segments)",
+        ),
+    ],
+)
+def test_bad_values_and_shapes_are_named(call, message):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert str(e.value).startswith(message), str(e.value)
+
+
+def test_a_waterline_file_with_a_word_names_the_file_and_the_line(tmp_path):
+    f = tmp_path / "half.txt"
+    f.write_text("# x y\n38.1 0\n38.1 12.2\nforty 12.2\n-38.1 0\n")
+    with pytest.raises(ValueError, match=r"half.txt, line 4: expected numbers .* 'forty 12.2'"):
+        jt.io.read_waterline(f, draft=5.0)
+
+
+def test_jaxtow_drift_with_a_negative_hs_is_one_line(tmp_path, capsys):
+    from jaxtow.cli import main
+
+    with pytest.raises(SystemExit) as e:
+        main(["drift", "--hs", "-1", "--out", str(tmp_path)])
+    text = str(e.value.code) + capsys.readouterr().err
+    assert "hs" in text and "Traceback" not in text
+
+
+def test_a_half_wamit_table_reads_back_to_the_same_drift(tmp_path):
+    """A table over jaxtow headings 0..180 written as WAMIT .8: read back with the default
+    (a symmetric hull's half table completed to the full circle) it gives the same drift at
+    every heading written, and with ``symmetry='none'`` the same table exactly."""
+    w, b = np.linspace(0.2, 2.0, 10), np.radians(np.linspace(0.0, 180.0, 7))
+    fy = np.sin(b)[None, :] * np.ones((10, 1))
+    q = jt.drift.QTF(omega=w, beta=b, fx=np.ones((10, 7)), fy=fy, nz=0.5 * fy)
+    f = tmp_path / "half.8"
+    jt.io.write_wamit_drift(q, f)
+    full, info = jt.io.read_qtf(f)
+    assert "completed by port-starboard symmetry" in info["symmetry"]
+    for k in range(7):
+        np.testing.assert_allclose(
+            np.asarray(full(w[3], b[k])), np.asarray(q(w[3], b[k])), rtol=1e-9, atol=1e-12
+        )
+    same, _ = jt.io.read_qtf(f, symmetry="none")
+    np.testing.assert_allclose(np.asarray(same.beta), b, atol=1e-12)
+    np.testing.assert_allclose(np.asarray(same.values), np.asarray(q.values), rtol=1e-9)

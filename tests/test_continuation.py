@@ -7,7 +7,7 @@ from helpers import model
 
 import jaxtow as jt
 from jaxtow import continuation as ct
-from jaxtow._equilibrium import _state_from_heading
+from jaxtow._equilibrium import state_from_heading
 
 
 @pytest.fixture(scope="module")
@@ -81,7 +81,7 @@ def test_hopf_points_match_sign_change_of_sampled_max_real(branches, barge_2b):
     @jax.vmap
     def max_real_v(xp):
         m = jt.with_parameters(base, xp=xp)
-        return jt.max_real_eigenvalue(m, _state_from_heading(jnp.asarray(0.0), m)[0])
+        return jt.max_real_eigenvalue(m, state_from_heading(jnp.asarray(0.0), m)[0])
 
     def max_real(xp):
         return float(max_real_v(jnp.asarray([xp]))[0])
@@ -109,7 +109,7 @@ def test_time_domain_onset_at_the_hopf_point(branches, barge_2b):
 
     def late_amplitude(xp):
         m = model(barge_2b, l0=0.5, xp=xp)
-        y0 = _state_from_heading(jnp.asarray(0.0), m)[0].at[5].set(0.01)
+        y0 = state_from_heading(jnp.asarray(0.0), m)[0].at[5].set(0.01)
         sim = jt.simulate(m, y0, t1=600.0, n_save=6001)
         psi = np.asarray(sim.ys[:, 5])
         return np.abs(psi[-1000:]).max()
@@ -125,7 +125,7 @@ def test_limit_cycle_matches_long_time_domain_run(barge_2b):
     assert orbit.residual < 1e-8 and orbit.stable
     mu = np.sort(np.abs(orbit.floquet))
     assert mu[-1] == pytest.approx(1.0, abs=1e-6)  # the trivial multiplier
-    y0 = _state_from_heading(jnp.asarray(0.0), m)[0].at[5].set(0.05)
+    y0 = state_from_heading(jnp.asarray(0.0), m)[0].at[5].set(0.05)
     sim = jt.simulate(m, y0, t1=3000.0, n_save=30001)
     met = jt.fishtail_metrics(m, sim)
     assert met.outcome == "limit_cycle"
@@ -154,7 +154,7 @@ def test_hopf_curve_passes_through_the_one_parameter_hopf_point(barge_2b):
     assert len(curve) > 5
     for xp, l0 in curve[::5]:
         mm = model(barge_2b, l0=float(l0), xp=float(xp))
-        y = _state_from_heading(jnp.asarray(0.0), mm)[0]
+        y = state_from_heading(jnp.asarray(0.0), mm)[0]
         ev = np.linalg.eigvals(np.asarray(jt.jacobian(mm, y)))
         assert np.min(np.abs(ev.real)) < 1e-9  # a pair on the imaginary axis
 

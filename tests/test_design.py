@@ -45,12 +45,8 @@ def test_offset_kinematics_move_the_cog_with_its_body_velocity(model_2a):
     y = np.asarray(sim.ys)
     u, v, psi = y[:, 0], y[:, 1], y[:, 5]
     err = max(
-        np.max(
-            np.abs(np.gradient(tr.cog_x, tr.t) - (u * np.cos(psi) - v * np.sin(psi)))[5:-5]
-        ),
-        np.max(
-            np.abs(np.gradient(tr.cog_y, tr.t) - (u * np.sin(psi) + v * np.cos(psi)))[5:-5]
-        ),
+        np.max(np.abs(np.gradient(tr.cog_x, tr.t) - (u * np.cos(psi) - v * np.sin(psi)))[5:-5]),
+        np.max(np.abs(np.gradient(tr.cog_y, tr.t) - (u * np.sin(psi) + v * np.cos(psi)))[5:-5]),
     )
     wrong = jt.trajectory(jt.with_parameters(m, yp=0.0), sim)  # the same run read with yp ignored
     err_wrong = np.max(

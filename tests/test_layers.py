@@ -21,6 +21,8 @@ PACKAGE = Path(__file__).resolve().parents[1] / "jaxtow"
 NUMERICS = (
     "jaxtow._",  # the core and the tow model's private modules
     "jaxtow.lines",
+    "jaxtow.guidelines",
+    "jaxtow.strip",
     "jaxtow.waves",
     "jaxtow.drift",
     "jaxtow.resistance",
@@ -194,6 +196,7 @@ LOCAL_IMPORTS_ALLOWED = {
     "dask": "an optional extra (jaxtow[dask])",
     "distributed": "an optional extra (jaxtow[dask])",
     "matplotlib": "its import costs about a second and selects a backend",
+    "tqdm": "a progress display: a chunked loop loads it only where a bar is shown",
 }
 
 
@@ -248,3 +251,55 @@ def test_no_function_is_longer_than_80_lines_but_the_listed_kernels():
     page = (PACKAGE.parent / "docs" / "architecture.md").read_text(encoding="utf-8")
     for name in LONG_FUNCTIONS:
         assert f"`{name}`" in page
+
+
+def _private(module: str) -> bool:
+    return any(part.startswith("_") for part in module.split(".")[1:])
+
+
+def test_no_underscore_name_crosses_a_module():
+    """A name that starts with an underscore is its module's own: no other module imports it
+    (a package's private modules share their public names, `from ._x import name`)."""
+    mods = _modules()
+    bad = []
+    for path in mods.values():
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if not isinstance(node, ast.ImportFrom):
+                continue
+            for a in node.names:
+                name = a.name
+                if not name.startswith("_") or name.startswith("__"):
+                    continue
+                if not any(k.endswith("." + name) for k in mods):  # a module is no name
+                    bad.append(f"{path.relative_to(PACKAGE.parent)}:{node.lineno} imports {name}")
+    assert not bad, "\n".join(bad)
+
+
+def test_the_command_line_uses_public_names_only():
+    """The application imports the library through its public names: the facade `jaxtow`, a
+    public package or module, or its own modules; never another package's private module."""
+    bad = []
+    for m, path in _modules().items():
+        if not m.startswith("jaxtow.cli"):
+            continue
+        for target, line, _ in _imports(m, path):
+            if not target.startswith("jaxtow.") or target.startswith("jaxtow.cli"):
+                continue
+            mod = target
+            while mod not in _modules() and "." in mod:
+                mod = mod.rsplit(".", 1)[0]
+            if _private(mod):
+                bad.append(f"{path.relative_to(PACKAGE.parent)}:{line} imports {target}")
+    assert not bad, "\n".join(bad)
+
+
+def test_the_sweep_loop_loads_no_progress_display():
+    """The numerics' chunked loops take a progress meter as an object: importing them loads
+    neither tqdm nor matplotlib (the command line's bar loads tqdm when it is shown)."""
+    code = (
+        "import sys, jaxtow._sweep, jaxtow._simulate, jaxtow._progress\n"
+        "print(sorted(m for m in ('tqdm', 'matplotlib', 'xarray') if m in sys.modules))"
+    )
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "[]", r.stdout

@@ -18,13 +18,9 @@ def test_clarke_regressions_by_hand_on_barge2():
     S = math.pi * (T / L) ** 2
     d = P.clarke_linear_derivatives(L, B, T, cb)
     assert d.Yv == pytest.approx(-S * (1 + 0.40 * 0.928 * 4.88) * 15.24, rel=1e-12)
-    assert d.Yr == pytest.approx(
-        -S * (-0.5 + 2.2 * 24.4 / 76.2 - 0.08 * 4.88) * 15.24, rel=1e-12
-    )
+    assert d.Yr == pytest.approx(-S * (-0.5 + 2.2 * 24.4 / 76.2 - 0.08 * 4.88) * 15.24, rel=1e-12)
     assert d.Nv == pytest.approx(-S * (0.5 + 2.4 * 5 / 76.2) * 15.24, rel=1e-12)
-    assert d.Nr == pytest.approx(
-        -S * (0.25 + 0.039 * 4.88 - 0.56 * 24.4 / 76.2) * 15.24, rel=1e-12
-    )
+    assert d.Nr == pytest.approx(-S * (0.25 + 0.039 * 4.88 - 0.56 * 24.4 / 76.2) * 15.24, rel=1e-12)
     assert d.lb_in_range
     assert not P.clarke_linear_derivatives(200.0, 10.0, 5.0, 0.7).lb_in_range
 

@@ -138,7 +138,9 @@ def test_committed_panel_comparison_matches_the_strip_side():
         assert float(c.added_mass[i, k, k]) == pytest.approx(r["strip_a"], rel=1e-8)
         assert float(c.damping[i, k, k]) == pytest.approx(r["strip_b"], rel=1e-8)
     om = np.array([r["omega"] for r in data["head_sea_raos"]])
-    raos = np.asarray(S.motions(hull, om, [0.0], loading=jt.Loading(z_g=data["z_g"])).rao)[:, 0][:, [1, 3]]
+    raos = np.asarray(S.motions(hull, om, [0.0], loading=jt.Loading(z_g=data["z_g"])).rao)[:, 0][
+        :, [1, 3]
+    ]
     for i, r in enumerate(data["head_sea_raos"]):
         assert abs(raos[i, 0]) == pytest.approx(r["strip_heave"], rel=1e-8)
         assert abs(raos[i, 1]) == pytest.approx(r["strip_pitch"], rel=1e-8)

@@ -184,7 +184,9 @@ def test_strip_drift_is_a_tow_drift_source():
     assert "strip theory" in desc and "estimate" in desc
     hull = S.box(76.2, 24.4, 5.0)
     wl = jt.presets.box_waterline(76.2, 24.4, 5.0)
-    ref = S.drift_qtf(hull, wl, np.array([0.6, 1.0]), np.linspace(0, np.pi, 3), loading=jt.Loading(z_g=5.0))
+    ref = S.drift_qtf(
+        hull, wl, np.array([0.6, 1.0]), np.linspace(0, np.pi, 3), loading=jt.Loading(z_g=5.0)
+    )
     for w in (0.6, 1.0):
         assert float(np.asarray(q(w, 0.0))[0]) == pytest.approx(
             float(np.asarray(ref(w, 0.0))[0]), rel=1e-6
@@ -213,7 +215,11 @@ def test_committed_drift_comparison_matches_the_strip_side():
     beta = np.radians([0.0, 90.0])
     for name, (hull, wl) in hulls.items():
         q = S.drift_qtf(
-            hull, wl, np.array(data["omega"]), np.radians(data["beta_deg"]), loading=jt.Loading(z_g=data["z_g"])
+            hull,
+            wl,
+            np.array(data["omega"]),
+            np.radians(data["beta_deg"]),
+            loading=jt.Loading(z_g=data["z_g"]),
         )
         for r in data["rows"]:
             if r["hull"] == name and r["omega"] in om and np.radians(r["beta_deg"]) in beta:
@@ -316,8 +322,16 @@ def test_maruo_at_forward_speed_is_continuous_and_converged(monkeypatch):
 
     hull = S.box(76.2, 24.4, 5.0, n_stations=11)
     om = np.array([0.6, 0.9])
-    r0 = np.asarray(S.added_resistance(hull, om, [0.0], 0.0, loading=jt.Loading(z_g=5.0), method=S.FarField()).resistance)
-    r1 = np.asarray(S.added_resistance(hull, om, [0.0], 1e-3, loading=jt.Loading(z_g=5.0), method=S.FarField()).resistance)
+    r0 = np.asarray(
+        S.added_resistance(
+            hull, om, [0.0], 0.0, loading=jt.Loading(z_g=5.0), method=S.FarField()
+        ).resistance
+    )
+    r1 = np.asarray(
+        S.added_resistance(
+            hull, om, [0.0], 1e-3, loading=jt.Loading(z_g=5.0), method=S.FarField()
+        ).resistance
+    )
     assert np.allclose(r1, r0, rtol=2e-3)
     w = S.wigley(3.0, 0.3, 0.1875)
     om = np.sqrt(2 * np.pi * G / (np.array([0.75, 1.0, 1.5]) * 3.0))
@@ -338,8 +352,14 @@ def test_maruo_strips_are_below_gerritsma_beukelman_in_long_waves():
     hull = S.box(76.2, 24.4, 5.0, n_stations=11)
     om = np.array([0.4, 0.6])
     for u, factor in ((0.0, 1 / 3), (1.0, 1.0)):
-        gb = np.asarray(S.added_resistance(hull, om, [0.0], u, loading=jt.Loading(z_g=5.0)).resistance)[:, 0]
-        far = np.asarray(S.added_resistance(hull, om, [0.0], u, loading=jt.Loading(z_g=5.0), method=S.FarField()).resistance)[:, 0]
+        gb = np.asarray(
+            S.added_resistance(hull, om, [0.0], u, loading=jt.Loading(z_g=5.0)).resistance
+        )[:, 0]
+        far = np.asarray(
+            S.added_resistance(
+                hull, om, [0.0], u, loading=jt.Loading(z_g=5.0), method=S.FarField()
+            ).resistance
+        )[:, 0]
         assert np.all(far > 0) and np.all(far < gb * factor)
     follow = S.added_resistance(hull, np.array([0.5, 4.0]), [np.pi], 3.0, method=S.FarField())
     assert np.asarray(follow.motions.omega_e)[1, 0] < 0 < np.asarray(follow.motions.omega_e)[0, 0]
@@ -411,7 +431,9 @@ def test_committed_motion_comparison_matches_the_strip_side():
     modes = {"heave": 1, "roll": 2, "pitch": 3}
     om = np.array([0.5, 1.0])
     for name, hull in hulls.items():
-        rao = np.asarray(S.motions(hull, om, np.radians([0.0, 90.0]), loading=jt.Loading(z_g=data["z_g"])).rao)
+        rao = np.asarray(
+            S.motions(hull, om, np.radians([0.0, 90.0]), loading=jt.Loading(z_g=data["z_g"])).rao
+        )
         for r in data["raos"]:
             if r["hull"] == name and r["omega"] in om:
                 i, j = list(om).index(r["omega"]), int(r["beta_deg"] == 90.0)

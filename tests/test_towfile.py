@@ -426,7 +426,9 @@ def test_study_builtin_and_render_in_chromium(name, tmp_path):
         assert rec["verdict"] in jt.studies.YAW_VERDICTS
         assert "no_separation" in rec["outside_validity"]
         assert "outside the model's validity" in rec["verdict_text"]
-    assert s["assessment"]["verdict"] == ("not acceptable" if name == "barge2a" else s["assessment"]["verdict"])
+    assert s["assessment"]["verdict"] == (
+        "not acceptable" if name == "barge2a" else s["assessment"]["verdict"]
+    )
     exe = _chromium()
     if exe is None:
         pytest.skip("chromium is not installed (Debian package 'chromium')")

@@ -44,7 +44,7 @@ def rigid_body(
     ``loading.x_g`` is given), the radii of gyration ``loading.radii`` (default the
     estimate for the mesh's L and B), exact hydrostatic stiffness from the waterline polygon,
     and the linear roll damping ``loading.roll_damping`` times critical (finalised per
-    frequency with the roll added mass, `_roll_damping`). Without a loading: the documented
+    frequency with the roll added mass, `roll_damping_matrix`). Without a loading: the documented
     estimate, `jaxtow.Loading.estimate` at the mesh's draft (the CoG
     `ASSUMPTIONS['cog_z']` above the keel, thesis Table B.3)."""
     keel = float(mesh.vertices[:, 2].min())
@@ -91,14 +91,14 @@ def rigid_body(
     return RigidBody(m, cog, inertia, C, D, notes)
 
 
-def _fixed_body() -> RigidBody:
+def fixed_body() -> RigidBody:
     """Placeholder body for a fixed (diffraction-only) computation: no mass, no stiffness."""
     return RigidBody(
         0.0, np.zeros(3), np.zeros((3, 3)), np.zeros((6, 6)), np.zeros((6, 6)), {"fixed": True}
     )
 
 
-def _roll_damping(body: RigidBody, a44: float) -> np.ndarray:
+def roll_damping_matrix(body: RigidBody, a44: float) -> np.ndarray:
     """Dimensional viscous damping B44 (`jaxtow.roll_damping_coefficient`) at the roll added
     mass A44(ω)."""
     D = np.zeros((6, 6))

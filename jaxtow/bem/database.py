@@ -20,15 +20,15 @@ from .._progress import progress_meter
 from .._units import RHO_SEA, G
 from ..drift._qtf import QTF
 from ..io import Fingerprint, save_netcdf
-from .body import RigidBody, _fixed_body, rigid_body
+from .body import RigidBody, fixed_body, rigid_body
 from .capytaine_mesh import require_capytaine
 from .meshes import HullMesh, raked_barge_mesh
 from .solve import (
-    _COMPONENTS,
-    _PARTS,
     DOFS,
+    FORCE_COMPONENTS,
     MIN_PANELS_PER_WAVELENGTH,
-    _prepare,
+    NEAR_FIELD_PARTS,
+    prepare,
     solve_frequency,
 )
 
@@ -96,8 +96,8 @@ def _frequency_dataset(r: dict):
             "beta": r["beta"],
             "dof": list(DOFS),
             "dof_j": list(DOFS),
-            "component": list(_COMPONENTS),
-            "part": list(_PARTS),
+            "component": list(FORCE_COMPONENTS),
+            "part": list(NEAR_FIELD_PARTS),
             "axis": ["x", "y"],
             "order": [0, 1, 2],
         },
@@ -166,7 +166,7 @@ def _solve_frequencies(mesh, body, omega, beta, solve: dict, cache_dir, progress
         if path is not None and path.exists():
             ds = xr.load_dataset(path)
         else:
-            prepared = prepared or _prepare(mesh, body)
+            prepared = prepared or prepare(mesh, body)
             ds = _frequency_dataset(
                 solve_frequency(mesh, body, w, beta, **solve, prepared=prepared)
             )
@@ -214,7 +214,7 @@ def bem_drift(
     if body is None and not fixed:
         body = rigid_body(mesh, loading, rho=rho, g=g)
     if body is None:
-        body = _fixed_body()
+        body = fixed_body()
     solve = dict(rho=rho, g=g, water_depth=water_depth, fixed=fixed, theta_step=theta_step)
     parts = _solve_frequencies(mesh, body, omega, beta, solve, cache_dir, progress)
     out = xr.concat(

@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from .._units import RHO_SEA, G
-from .body import RigidBody, _fixed_body, _roll_damping
+from .body import RigidBody, fixed_body, roll_damping_matrix
 from .capytaine_mesh import (
     require_capytaine,
     symmetric_capytaine_mesh,
@@ -73,7 +73,7 @@ class _Prepared:
     gradient: tuple  # (index, weights) of `surface_gradient_operator`
 
 
-def _prepare(mesh: HullMesh, body: RigidBody, symmetry: bool = True) -> _Prepared:
+def prepare(mesh: HullMesh, body: RigidBody, symmetry: bool = True) -> _Prepared:
     """Build the Capytaine body and the geometry once for all frequencies (building the
     symmetric meshes, their panel properties and the gradient operator cost as much as a
     coarse solve when redone per frequency)."""
@@ -154,7 +154,7 @@ def solve_frequency(
     """Everything at one frequency (see the module docstring); plain NumPy arrays.
     ``fixed=True`` holds the body still (RAOs zero: diffraction only). ``symmetry`` lets the
     solver use the hull's reflection planes (`symmetric_capytaine_mesh`; the same results).
-    ``prepared``: the shared geometry from `_prepare` (`bem_drift` builds it once)."""
+    ``prepared``: the shared geometry from `prepare` (`bem_drift` builds it once)."""
     cpt = require_capytaine()
     from capytaine.bem.airy_waves import airy_waves_potential, froude_krylov_force
 
@@ -162,8 +162,8 @@ def solve_frequency(
     if body is None:
         if not fixed:
             raise ValueError("parameter 'body' is needed unless fixed=True")
-        body = _fixed_body()
-    pr = prepared if prepared is not None else _prepare(mesh, body, symmetry)
+        body = fixed_body()
+    pr = prepared if prepared is not None else prepare(mesh, body, symmetry)
     cbody, mesh = pr.cbody, pr.mesh
     solver = solver or cpt.BEMSolver(method="indirect")
     env = dict(omega=float(omega), rho=rho, g=g, water_depth=water_depth)
@@ -183,7 +183,7 @@ def solve_frequency(
     fk = np.array([[froude_krylov_force(r.problem)[d] for d in DOFS] for r in dres])
     fd = np.array([[r.forces[d] for d in DOFS] for r in dres])
     exc = fk + fd  # (nb, 6)
-    Bv = np.zeros((6, 6)) if fixed else _roll_damping(body, A[3, 3])
+    Bv = np.zeros((6, 6)) if fixed else roll_damping_matrix(body, A[3, 3])
     H = -(omega**2) * (body.mass_matrix() + A) - 1j * omega * (Bd + Bv) + body.stiffness
     rao = np.zeros_like(exc) if fixed else np.linalg.solve(H, exc.T).T  # (nb, 6)
 
@@ -256,8 +256,8 @@ def solve_frequency(
     )
 
 
-_PARTS = ("I", "II", "III", "IV")
-_COMPONENTS = ("fx", "fy", "nz")
+NEAR_FIELD_PARTS = ("I", "II", "III", "IV")
+FORCE_COMPONENTS = ("fx", "fy", "nz")
 
 
 def far_field_drift(

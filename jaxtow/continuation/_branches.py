@@ -11,10 +11,10 @@ import jax.numpy as jnp
 import numpy as np
 
 from .._dynamics import TowModel, vector_field
-from .._equilibrium import _state_from_heading, heading_residual
+from .._equilibrium import heading_residual, state_from_heading
 from .._parameters import check_values, get_parameter
 from .._stability import STABLE, classify, jacobian, matrix_eigenvalues
-from ._curve import _Curve, _setter
+from ._curve import Curve, parameter_setter
 from ._hopf import hopf_test
 
 # ------------------------------------------------------------------ results
@@ -68,18 +68,18 @@ class Branch:
 
 class _EquilibriumProblem:
     def __init__(self, model: TowModel, parameter):
-        self.model, self.set = model, _setter(parameter)
+        self.model, self.set = model, parameter_setter(parameter)
 
         def G(x):
             return heading_residual(x[0], self.set(model, x[1]), throw=False)
 
         def state(x):
-            return _state_from_heading(x[0], self.set(model, x[1]))[0]
+            return state_from_heading(x[0], self.set(model, x[1]))[0]
 
         def jac(x):
             return jacobian(self.set(model, x[1]), state(x), throw=False)
 
-        self.G, self.curve = G, _Curve(G)
+        self.G, self.curve = G, Curve(G)
         self.state = jax.jit(state)
         self.jac = jax.jit(jac)
         self.hopf = jax.jit(lambda x: hopf_test(jac(x)))
@@ -195,7 +195,7 @@ def equilibrium_branch(
     speed; then pass ``p0``). ``psi0`` must be an equilibrium heading at p0 (0 is one for
     every symmetric model). Returns a `Branch` with its special points; with ``switch`` the
     side branches born at branch points are followed too (``children``)."""
-    set_model = _setter(parameter)
+    set_model = parameter_setter(parameter)
     if p0 is None:
         if callable(parameter):
             raise ValueError("parameter 'p0' is required when 'parameter' is a callable")

@@ -14,7 +14,7 @@ from .._roots import bisect, newton
 NEWTON_ITERATIONS = 12
 
 
-def _setter(parameter) -> Callable:
+def parameter_setter(parameter) -> Callable:
     if callable(parameter):
         return parameter
     return lambda model, p: with_parameters(model, **{parameter: p})
@@ -23,7 +23,7 @@ def _setter(parameter) -> Callable:
 # ------------------------------------------------------------------ generic curve following
 
 
-class _Curve:
+class Curve:
     """Pseudo-arclength continuation of G(x) = 0, x ∈ R² (jitted pieces, Python driver)."""
 
     def __init__(self, G: Callable):

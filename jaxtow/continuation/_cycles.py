@@ -10,11 +10,11 @@ import jax.numpy as jnp
 import numpy as np
 
 from .._dynamics import TowModel, sway_offset
-from .._equilibrium import _state_from_heading
+from .._equilibrium import state_from_heading
 from .._roots import newton
 from .._simulate import integrate
 from .._stability import matrix_eigenvalues
-from ._curve import _setter
+from ._curve import parameter_setter
 
 # ------------------------------------------------------------------ limit cycles
 
@@ -99,7 +99,7 @@ def limit_cycle_from_simulation(
     """Converge onto an attracting limit cycle: run the tow from a small disturbance of the
     straight-behind equilibrium, take the last ψ up-crossing of zero and the period between
     the last two, and refine by shooting (`periodic_orbit`)."""
-    y_eq = _state_from_heading(jnp.asarray(0.0), model)[0]
+    y_eq = state_from_heading(jnp.asarray(0.0), model)[0]
     y = np.asarray(_flow(model, y_eq.at[5].set(psi0), t1, n_save=int(20 * t1) + 1))
     ts = np.linspace(0.0, t1, len(y))
     psi = y[:, 5]
@@ -118,7 +118,7 @@ def limit_cycle_branch(
 ) -> list:
     """Limit cycles at each value of ``parameter`` (natural continuation: each orbit starts
     from the previous one; the first from ``start`` or a simulation)."""
-    set_model = _setter(parameter)
+    set_model = parameter_setter(parameter)
     out = []
     guess = start
     for p in values:

@@ -7,10 +7,10 @@ import jax.numpy as jnp
 import numpy as np
 
 from .._dynamics import TowModel
-from .._equilibrium import _state_from_heading
+from .._equilibrium import state_from_heading
 from .._roots import bisect
 from .._stability import characteristic_polynomial, hurwitz_determinants, jacobian
-from ._curve import _Curve, _setter
+from ._curve import Curve, parameter_setter
 
 
 def hopf_test(A):
@@ -35,11 +35,11 @@ def hopf_curve(
     equilibrium (ψ = 0) in the plane of ``parameters`` = (p₁, p₂), from ``start`` = (p₁, p₂)
     on or near the curve (it is first corrected onto it at fixed p₂), within ``ranges`` =
     ((lo₁, hi₁), (lo₂, hi₂)). Returns an (n, 2) array of (p₁, p₂) points."""
-    s1, s2 = (_setter(p) for p in parameters)
+    s1, s2 = (parameter_setter(p) for p in parameters)
 
     def G(x):
         m = s2(s1(model, x[0]), x[1])
-        return hopf_test(jacobian(m, _state_from_heading(jnp.asarray(0.0), m)[0], throw=False))
+        return hopf_test(jacobian(m, state_from_heading(jnp.asarray(0.0), m)[0], throw=False))
 
     x0 = np.asarray(start, float)
     # Δ₅ carries the stiff towline modes (values ~1e11): scale it by its gradient at the start
@@ -49,7 +49,7 @@ def hopf_curve(
         raise ValueError(
             f"parameter 'start' = {start}: the Hopf test function has no gradient there"
         )
-    curve = _Curve(lambda x: G(x) / scale)
+    curve = Curve(lambda x: G(x) / scale)
     x0, res = curve.point(x0, np.array([1.0, 0.0]), 0.0)
     if not res < 1e-9:
         raise ValueError(f"parameter 'start' = {start} is not near a Hopf curve (|Δ5| = {res:.3g})")
@@ -67,11 +67,11 @@ def hopf_curve(
 def straight_behind_hopf(model: TowModel, parameter, bracket, *, set_model=None):
     """Hopf point of the straight-behind equilibrium in ``parameter`` within ``bracket`` =
     (lo, hi), where Δ₅ changes sign: bisection to machine precision. Returns the value."""
-    s = set_model or _setter(parameter)
+    s = set_model or parameter_setter(parameter)
 
     def h(p):
         m = s(model, p)
-        return hopf_test(jacobian(m, _state_from_heading(jnp.asarray(0.0), m)[0], throw=False))
+        return hopf_test(jacobian(m, state_from_heading(jnp.asarray(0.0), m)[0], throw=False))
 
     lo, hi = (float(v) for v in bracket)
     if np.sign(float(h(lo))) == np.sign(float(h(hi))):

@@ -122,7 +122,14 @@ def wave_drift_damping(
 
     The surge and sway columns are the derivative of Aranha's finite form at U = 0 by
     forward-mode autodiff (equal to the printed eqs 2.40-2.41); the yaw-rate column is
-    `yaw_rate_damping` (zero without sectional moments)."""
+    `yaw_rate_damping` (zero without sectional moments). One (ω, β) a call: vmap over many
+    (`jaxtow.waves.mean_drift_damping` integrates a spectrum's)."""
+    for name, value in (("omega", omega), ("beta", beta)):
+        if jnp.ndim(value) != 0:
+            raise ValueError(
+                f"parameter {name!r} must be a single value (jax.vmap over many), got shape "
+                f"{jnp.shape(value)}"
+            )
     _check_heading(q, beta)
     return damping_matrix(q, omega, beta, g=g)
 

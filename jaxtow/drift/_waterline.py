@@ -31,7 +31,7 @@ import numpy as np
 
 from .._rules import POSITIVE
 
-_TOL = 1e-9
+GEOMETRY_TOL = 1e-9
 
 
 class Waterline(eqx.Module):
@@ -124,7 +124,7 @@ def _segments_intersect(p, q, r, s) -> bool:
         )
 
     scale = max(np.ptp([p[0], q[0], r[0], s[0]]), np.ptp([p[1], q[1], r[1], s[1]]), 1.0)
-    eps = _TOL * scale
+    eps = GEOMETRY_TOL * scale
     d1, d2, d3, d4 = orient(r, s, p), orient(r, s, q), orient(p, q, r), orient(p, q, s)
     e = eps * scale
     if ((d1 > e and d2 < -e) or (d1 < -e and d2 > e)) and (
@@ -140,7 +140,13 @@ def _segments_intersect(p, q, r, s) -> bool:
 
 
 def _per_segment(name, value, n):
-    a = np.broadcast_to(np.asarray(value, dtype=float), (n,)).copy()
+    a = np.asarray(value, dtype=float)
+    if a.ndim > 1 or (a.ndim == 1 and a.size not in (1, n)):
+        raise ValueError(
+            f"parameter {name!r} must be one value or one per segment ({n} segments), got "
+            f"shape {a.shape}"
+        )
+    a = np.broadcast_to(a, (n,)).copy()
     if not np.all(np.isfinite(a)):
         raise ValueError(f"parameter {name!r} must be finite, got {a!r}")
     return a
@@ -168,11 +174,11 @@ def waterline(
     if not np.all(np.isfinite(p)):
         raise ValueError("parameter 'points' must be finite")
     size = max(np.ptp(p[:, 0]), np.ptp(p[:, 1]))
-    if np.ptp(p[:, 1]) <= _TOL * max(size, 1.0):
+    if np.ptp(p[:, 1]) <= GEOMETRY_TOL * max(size, 1.0):
         raise ValueError("parameter 'points': the waterline has zero breadth")
-    if np.ptp(p[:, 0]) <= _TOL * max(size, 1.0):
+    if np.ptp(p[:, 0]) <= GEOMETRY_TOL * max(size, 1.0):
         raise ValueError("parameter 'points': the waterline has zero length")
-    if np.linalg.norm(p[-1] - p[0]) > _TOL * size:
+    if np.linalg.norm(p[-1] - p[0]) > GEOMETRY_TOL * size:
         raise ValueError(
             f"parameter 'points': the waterline is not closed (first point {p[0]}, "
             f"last point {p[-1]}; repeat the first point at the end)"
@@ -180,7 +186,7 @@ def waterline(
     p = p[:-1]
     n = p.shape[0]
     seg = np.roll(p, -1, axis=0) - p
-    if np.any(np.linalg.norm(seg, axis=1) <= _TOL * size):
+    if np.any(np.linalg.norm(seg, axis=1) <= GEOMETRY_TOL * size):
         raise ValueError(
             "parameter 'points': the waterline has repeated consecutive points (zero-length segment)"
         )
@@ -206,7 +212,7 @@ def waterline(
         area2 = -area2
     seg = np.roll(p, -1, axis=0) - p
     cross = seg[:, 0] * np.roll(seg, -1, axis=0)[:, 1] - seg[:, 1] * np.roll(seg, -1, axis=0)[:, 0]
-    convex = bool(np.all(cross >= -_TOL * size**2))
+    convex = bool(np.all(cross >= -GEOMETRY_TOL * size**2))
     if block_coefficient is None:
         block_coefficient = 0.5 * area2 / (np.ptp(p[:, 0]) * np.ptp(p[:, 1]))
     if not (0 < block_coefficient <= 1.0 + 1e-12):
@@ -235,7 +241,7 @@ def mirror_half(half, flare=0.0, local_draft=None):
     if h.ndim != 2 or h.shape[1] != 2 or h.shape[0] < 2:
         raise ValueError(f"half waterline must have shape (M, 2), M >= 2, got {h.shape}")
     size = max(np.ptp(h[:, 0]), np.ptp(h[:, 1]), 1.0)
-    if abs(h[0, 1]) > _TOL * size or abs(h[-1, 1]) > _TOL * size:
+    if abs(h[0, 1]) > GEOMETRY_TOL * size or abs(h[-1, 1]) > GEOMETRY_TOL * size:
         raise ValueError(
             "half waterline: the first and last points must lie on the centreline y = 0, "
             f"got y = {h[0, 1]} and {h[-1, 1]}; otherwise the mirrored waterline is not closed"

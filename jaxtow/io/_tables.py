@@ -14,7 +14,7 @@ from ..drift._qtf import QTF, SYMMETRY_TOL, symmetry_residual
 SYMMETRY_OPTIONS = ("auto", "none")
 
 
-def _positive(name, v):
+def positive_number(name, v):
     v = float(v)
     if not (math.isfinite(v) and v > 0):
         raise ValueError(f"parameter {name!r} must be a finite positive number, got {v!r}")
@@ -87,12 +87,12 @@ def complete_table(
     )
 
 
-def _shift_yaw(fx, fy, nz, ref):
+def shift_yaw(fx, fy, nz, ref):
     x, y = (float(v) for v in ref)
     return nz - (x * fy - y * fx)
 
 
-def _heading_deg(beta_wamit_deg):
+def heading_deg(beta_wamit_deg):
     """jaxtow headings [deg] from travel-to headings, rounded to 1e-6 deg: in [−180, 180),
     except that a following-sea column of a table on the positive side (0° … 180°, which a
     writer puts at travel-to 0°) reads as +180°, next to the headings it continues, not as
@@ -104,7 +104,7 @@ def _heading_deg(beta_wamit_deg):
     return deg
 
 
-def _reference(reference_point, listing):
+def reference_point_of(reference_point, listing):
     if isinstance(reference_point, str):
         if reference_point == "origin":
             return (0.0, 0.0), "the file's origin"

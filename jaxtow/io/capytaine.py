@@ -11,7 +11,7 @@ import xarray as xr
 
 from ..drift._qtf import QTF
 from ._netcdf import read_netcdf
-from ._tables import _heading_deg, _reference, _shift_yaw, complete_table
+from ._tables import complete_table, heading_deg, reference_point_of, shift_yaw
 
 _CAPY_VARIABLES = ("drift_force_surge", "drift_force_sway", "drift_force_yaw")
 
@@ -94,11 +94,11 @@ def qtf_from_capytaine(
     (vx, w, wd), (vy, _, _), (vn, _, _) = (
         _capytaine_values(n, d) for n, d in (("fx", fx), ("fy", fy), ("nz", nz))
     )
-    bdeg = _heading_deg(np.degrees(wd))
+    bdeg = heading_deg(np.degrees(wd))
     order_w, order_b = np.argsort(w), np.argsort(bdeg)
     vx, vy, vn = (v[order_w][:, order_b] for v in (vx, vy, vn))
-    ref, _ = _reference(reference_point, {})
-    vn = _shift_yaw(vx, vy, vn, ref)
+    ref, _ = reference_point_of(reference_point, {})
+    vn = shift_yaw(vx, vy, vn, ref)
     return complete_table(
         w[order_w],
         bdeg[order_b],

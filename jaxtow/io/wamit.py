@@ -50,7 +50,7 @@ import numpy as np
 from .._units import RHO_SEA, G
 from ..drift._qtf import QTF, FullQTF
 from ._atomic import write_file
-from ._tables import _heading_deg, _positive, _reference, _shift_yaw, complete_table
+from ._tables import complete_table, heading_deg, positive_number, reference_point_of, shift_yaw
 
 _MODES = {1: 0, 2: 1, 6: 2}
 _MEAN_COLUMNS = 8
@@ -165,9 +165,9 @@ def _run_parameters(path, ulen, rho, g):
     info: dict = {}
     for name, given, default in (("ulen", ulen, 1.0), ("rho", rho, RHO_SEA), ("g", g, G)):
         if given is not None:
-            info[name] = (_positive(name, given), "given")
+            info[name] = (positive_number(name, given), "given")
         elif name in lst:
-            info[name] = (_positive(name, lst[name]), "from " + ", ".join(lst["files"]))
+            info[name] = (positive_number(name, lst[name]), "from " + ", ".join(lst["files"]))
         else:
             info[name] = (default, "ASSUMED (not given, not in a WAMIT listing next to the file)")
     return info, lst
@@ -180,7 +180,7 @@ def _mean_table(path, a, lines, modes: dict, moment_set: int, r: float, gg: floa
     360 deg) with equal values is one; any other duplicate or a missing record is an error
     naming the line."""
     omega = 2 * math.pi / a[:, 0]
-    bdeg = _heading_deg(a[:, 1])
+    bdeg = heading_deg(a[:, 1])
     ws, bs = np.unique(omega), np.unique(bdeg)
     vals = np.full((3, ws.size, bs.size), np.nan)
     where = np.zeros((3, ws.size, bs.size), int)
@@ -246,8 +246,8 @@ def read_drift_file(
     keep &= np.isin(a[:, 3], list(modes))
     a, lines = a[keep], lines[keep]
     ws, bs, vals = _mean_table(path, a, lines, modes, moment_set, r, gg, L)
-    ref, ref_note = _reference(reference_point, listing)
-    fx, fy, nz = vals[0], vals[1], _shift_yaw(vals[0], vals[1], vals[2], ref)
+    ref, ref_note = reference_point_of(reference_point, listing)
+    fx, fy, nz = vals[0], vals[1], shift_yaw(vals[0], vals[1], vals[2], ref)
     q, sym = complete_table(
         ws, bs, fx, fy, nz, symmetry=symmetry, tol=symmetry_tol, length=L, origin=str(path)
     )
@@ -291,7 +291,11 @@ def write_wamit_drift(
     """Write a `QTF` in the WAMIT mean-drift layout (see module docstring): travel-to
     headings in [0°, 360°) (head seas 180°), the +180° column of a full-circle table once;
     `read_wamit_drift` returns the same grid."""
-    ulen, rho, g = _positive("ulen", ulen), _positive("rho", rho), _positive("g", g)
+    ulen, rho, g = (
+        positive_number("ulen", ulen),
+        positive_number("rho", rho),
+        positive_number("g", g),
+    )
     omega = np.asarray(q.omega)
     bw, cols = _wamit_headings(q.beta)
     vals = np.asarray(q.values)
@@ -331,7 +335,7 @@ def read_wamit_qtf(
     skipped = int(np.sum((a[:, 0] > 0) & (a[:, 1] > 0) & ~np.isclose(a[:, 2], a[:, 3])))
     a, lines = a[keep], lines[keep]
     w1, w2 = 2 * math.pi / a[:, 0], 2 * math.pi / a[:, 1]
-    bdeg = _heading_deg(a[:, 2])
+    bdeg = heading_deg(a[:, 2])
     ws, bs = np.unique(np.concatenate([w1, w2])), np.unique(bdeg)
     n, nb = ws.size, bs.size
     vals = np.full((3, n, n, nb), np.nan + 0j)
@@ -359,8 +363,8 @@ def read_wamit_qtf(
             f"{2 * math.pi / ws[i]:g}, {2 * math.pi / ws[j]:g} s at WAMIT heading "
             f"{bs[kb] + 180.0:g} deg (or its conjugate pair)"
         )
-    ref, ref_note = _reference(reference_point, listing)
-    vals[2] = _shift_yaw(vals[0], vals[1], vals[2], ref)
+    ref, ref_note = reference_point_of(reference_point, listing)
+    vals[2] = shift_yaw(vals[0], vals[1], vals[2], ref)
     info = dict(
         file=str(path),
         format="WAMIT difference-frequency QTF (.12d)",
@@ -377,7 +381,11 @@ def write_wamit_qtf(
     q: FullQTF, path, *, ulen: float = 1.0, rho: float = RHO_SEA, g: float = G
 ) -> None:
     """Write a `jaxtow.drift.FullQTF` in the WAMIT .12d layout (both triangles)."""
-    ulen, rho, g = _positive("ulen", ulen), _positive("rho", rho), _positive("g", g)
+    ulen, rho, g = (
+        positive_number("ulen", ulen),
+        positive_number("rho", rho),
+        positive_number("g", g),
+    )
     w = np.asarray(q.omega)
     bw, cols = _wamit_headings(q.beta)
     v = np.asarray(q.values)

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..drift._waterline import _TOL, Waterline, mirror_half, waterline
+from ..drift._waterline import GEOMETRY_TOL, Waterline, mirror_half, waterline
 
 
 def read_waterline(
@@ -59,13 +59,13 @@ def write_waterline(path, wl: Waterline) -> None:
     p = np.asarray(wl.points)
     fl, ld = np.degrees(np.asarray(wl.flare)), np.asarray(wl.local_draft)
     n = p.shape[0]
-    i0 = int(np.argmax(np.where(np.abs(p[:, 1]) < _TOL * 1e3, p[:, 0], -np.inf)))
+    i0 = int(np.argmax(np.where(np.abs(p[:, 1]) < GEOMETRY_TOL * 1e3, p[:, 0], -np.inf)))
     lines = ["# x [m]  y [m]  flare [deg]  local_draft [m]  (half waterline, bow to stern)"]
     i = i0
     while True:
         lines.append(f"{p[i, 0]:.12g} {p[i, 1]:.12g} {fl[i]:.12g} {ld[i]:.12g}")
         i = (i + 1) % n
-        if abs(p[i, 1]) < _TOL * 1e3 and i != i0:
+        if abs(p[i, 1]) < GEOMETRY_TOL * 1e3 and i != i0:
             lines.append(f"{p[i, 0]:.12g} {p[i, 1]:.12g}")
             break
     Path(path).write_text("\n".join(lines) + "\n")

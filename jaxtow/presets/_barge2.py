@@ -8,13 +8,13 @@ import math
 from .._towline import Towline
 from .._units import TONNE_FORCE, Scales
 from .._values import (
-    _TABLE_3_7,
     ASSUMPTIONS,
     BARGE2_BREADTH,
     BARGE2_LENGTH,
     BARGE2_WIND_TABLE,
     ILLUSTRATIVE_TUG,
     SEA_STATES,
+    TABLE_3_7,
     U_TUG_DEFAULT,
 )
 from .._vessel import Vessel
@@ -36,7 +36,7 @@ def barge2_rake(draft: float | None = None) -> dict:
     each end rake below the waterline, its angle to the horizontal and the waterline flare
     η (angle of the raked face from the vertical) [rad]."""
     T = ASSUMPTIONS["draft"]["value"] if draft is None else float(draft)
-    cb = block_coefficient_from_mass(_TABLE_3_7["2a"]["m"], BARGE2_LENGTH, BARGE2_BREADTH)
+    cb = block_coefficient_from_mass(TABLE_3_7["2a"]["m"], BARGE2_LENGTH, BARGE2_BREADTH)
     a = (1.0 - cb) * BARGE2_LENGTH
     angle = math.atan2(T, a)
     return dict(extent=a, angle=angle, flare=0.5 * math.pi - angle, draft=T, block_coefficient=cb)
@@ -77,7 +77,7 @@ def barge2_hull(draft: float | None = None, *, n_stations: int = 21):
 
 
 def _barge2(version: str, draft: float | None) -> Vessel:
-    table = _TABLE_3_7[version]
+    table = TABLE_3_7[version]
     d = ASSUMPTIONS["draft"]["value"] if draft is None else draft
     added = clarke_added_mass(table["m"], BARGE2_LENGTH, BARGE2_BREADTH, d)
     assumed = (

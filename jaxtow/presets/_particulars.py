@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .._values import _TABLE_3_7, ASSUMPTIONS
+from .._values import ASSUMPTIONS, TABLE_3_7
 from .._vessel import Vessel
 
 
@@ -299,7 +299,7 @@ def particulars_derivatives(
                 f"{add.aspect_ratio:.2f}, acting at x = {add.x:g} m); estimate"
             )
     for k in _BORROWED:
-        vals[k] = _TABLE_3_7["2a"][k]
+        vals[k] = TABLE_3_7["2a"][k]
         notes[k] = (
             "borrowed from Barge 2a (thesis Table 3.7: a raked barge without skegs, L/B 3.1, "
             "C_B 0.93); estimate"

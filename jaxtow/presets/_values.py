@@ -2,7 +2,6 @@
 `jaxtow._values` (which sits below every layer so that the numerical packages can read it)."""
 
 from .._values import (
-    _TABLE_3_7 as _TABLE_3_7,
     ASSUMPTIONS as ASSUMPTIONS,
     BARGE2_BREADTH as BARGE2_BREADTH,
     BARGE2_LENGTH as BARGE2_LENGTH,
@@ -10,5 +9,6 @@ from .._values import (
     ILLUSTRATIVE_TUG as ILLUSTRATIVE_TUG,
     PLAUSIBLE_RANGES as PLAUSIBLE_RANGES,
     SEA_STATES as SEA_STATES,
+    TABLE_3_7 as TABLE_3_7,
     U_TUG_DEFAULT as U_TUG_DEFAULT,
 )

@@ -20,7 +20,7 @@ from ..drift import (
 from ..drift._compare import method_mean_drift
 from ..drift._sailing import check_form
 from ..waves import DEFAULT_OMEGA, spectral_integral
-from ..waves._spectra import _jonswap
+from ..waves._spectra import jonswap_density
 from ._flow import RHO_AIR, CoefficientTable, ManoeuvringCoefficients, OCIMFLoad
 from ._sea import SeaState
 from ._tug import Tug
@@ -87,7 +87,7 @@ class WaveDrift(eqx.Module):
         """JONSWAP S(ω) on ``omega`` (`jaxtow.waves.jonswap`; Hs = 0 gives a calm sea). The
         values are the sea state's, checked by its rules (`SeaState`; `resistance_grid`
         checks its Tp grid), so no run-time check is compiled in."""
-        return _jonswap(self.omega, hs, tp, gamma)
+        return jonswap_density(self.omega, hs, tp, gamma)
 
     def __call__(self, hs, tp, gamma, beta, u, v):
         S = self.spectrum(hs, tp, gamma)

@@ -13,7 +13,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
-from ._spectra import _integrate, check_ascending
+from ._spectra import check_ascending, integrate_density
 
 #: The default wave-frequency grid of every irregular-sea integral in jaxtow [rad/s]: 0.05-4
 #: rad/s in 800 points (Δω ≈ 0.005 rad/s). It covers JONSWAP spectra with Tp from about 4 s
@@ -22,12 +22,17 @@ DEFAULT_OMEGA = np.linspace(0.05, 4.0, 800)
 
 
 def spectral_integral(
-    omega: Float[ArrayLike, " nw"], S: Float[ArrayLike, " nw"], X: Float[ArrayLike, "nw ..."]
+    omega: Float[ArrayLike, " nw"],
+    S: Float[ArrayLike, " nw"],
+    X: Float[ArrayLike, "nw ..."],
+    *,
+    name: str = "X",
 ) -> Float[Array, "..."]:
     """2 ∫ S(ω) X(ω) dω by the trapezoidal rule on the grid ``omega``: the one irregular-sea
     integral of jaxtow. ``X`` has ω on axis 0 and any trailing axes (a QTF component (n_ω,),
     the three drift components (n_ω, 3), a damping matrix (n_ω, 3, 3)). Shapes are checked
-    (also under jit and vmap, where they are known) with an error naming the argument."""
+    (also under jit and vmap, where they are known) with an error naming the argument
+    (``name``: the integrand's name in the caller's signature)."""
     X = jnp.asarray(X)
     nw = jnp.shape(omega)
     if len(nw) != 1:
@@ -39,10 +44,10 @@ def spectral_integral(
         )
     if X.shape[:1] != nw:
         raise ValueError(
-            f"the integrand must have the frequency grid omega ({nw[0]}) on its first axis, got "
-            f"shape {X.shape}"
+            f"parameter {name!r} must have the frequency grid omega ({nw[0]}) on its first "
+            f"axis, got shape {X.shape}"
         )
-    return 2.0 * _integrate(omega, jnp.moveaxis(X, 0, -1) * jnp.asarray(S))
+    return 2.0 * integrate_density(omega, jnp.moveaxis(X, 0, -1) * jnp.asarray(S))
 
 
 def mean_drift(
@@ -54,7 +59,7 @@ def mean_drift(
     For a constant P this is P·2m0 = P·Hs²/8 (with 4√m0 = Hs): the short-wave conversion of
     regular-wave ζa² to Hs²/8 (thesis eq. 2.32).
     """
-    return spectral_integral(omega, S, P)
+    return spectral_integral(omega, S, P, name="P")
 
 
 def mean_drift_damping(
@@ -62,7 +67,7 @@ def mean_drift_damping(
 ) -> Float[Array, "..."]:
     """Mean wave-drift damping in irregular waves, b = 2 ∫ B(ω) S(ω) dω (thesis eq. 2.49),
     with `spectral_integral`; ``B`` has ω on axis 0 (e.g. (n_ω, 3, 3) for the full matrix)."""
-    return spectral_integral(omega, S, B)
+    return spectral_integral(omega, S, B, name="B")
 
 
 def slow_drift_force_spectrum(
@@ -83,7 +88,7 @@ def slow_drift_force_spectrum(
     def one(m):
         S2 = jnp.interp(omega + m, omega, S, right=0.0)
         T = jnp.interp(omega + 0.5 * m, omega, P)
-        return 8.0 * _integrate(omega, S * S2 * T**2)
+        return 8.0 * integrate_density(omega, S * S2 * T**2)
 
     return jax.vmap(one)(jnp.atleast_1d(jnp.asarray(mu)))
 

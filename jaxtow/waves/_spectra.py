@@ -14,7 +14,16 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
-from .._rules import POSITIVE, Checked, at_least, check_positive, guard, is_concrete, rule_field
+from .._rules import (
+    NONNEGATIVE,
+    POSITIVE,
+    Checked,
+    at_least,
+    check_positive,
+    guard,
+    is_concrete,
+    rule_field,
+)
 
 #: g used by the thesis's sea-state relations (127.53 = 13 g and 294.30 = 30 g, eq. 3.5).
 G_THESIS = 9.81
@@ -56,21 +65,21 @@ def check_ascending(omega, name: str = "omega") -> None:
         raise ValueError(f"parameter {name!r} must be strictly ascending")
 
 
-def _integrate(omega, y):
+def integrate_density(omega, y):
     """Trapezoidal rule over the given ω grid (last axis)."""
     check_ascending(omega)
     omega = jnp.asarray(omega)
     return jnp.sum(0.5 * (y[..., 1:] + y[..., :-1]) * jnp.diff(omega), axis=-1)
 
 
-def _jonswap(omega, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: bool = False):
+def jonswap_density(omega, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: bool = False):
     """The JONSWAP formula of `jonswap`, unchecked (the `Jonswap` sea state's fields are
     checked by their rules)."""
     s = _bretschneider(omega, hs, tp) * _peak_enhancement(
         jnp.asarray(omega), tp, gamma, sigma_a, sigma_b
     )
     if normalise:
-        s = s * (hs**2 / 16.0) / _integrate(omega, s)
+        s = s * (hs**2 / 16.0) / integrate_density(omega, s)
     return s
 
 
@@ -86,7 +95,8 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
     POSITIVE.check("hs", hs)
     POSITIVE.check("tp", tp)
     GAMMA_RULE.check("gamma", gamma)
-    s = _jonswap(omega, hs, tp, gamma, sigma_a, sigma_b, normalise)
+    NONNEGATIVE.check("omega", omega)
+    s = jonswap_density(omega, hs, tp, gamma, sigma_a, sigma_b, normalise)
     # under jit or vmap the eager checks cannot see the values: the same rules, traced
     return guard(
         s,
@@ -94,6 +104,7 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
             POSITIVE.traced("hs", hs),
             POSITIVE.traced("tp", tp),
             GAMMA_RULE.traced("gamma", gamma),
+            NONNEGATIVE.traced("omega", omega),
         ],
     )
 
@@ -164,7 +175,7 @@ class Jonswap(AbstractSpectrum):
     normalise: bool = eqx.field(static=True, default=False)
 
     def density(self, omega):
-        return _jonswap(
+        return jonswap_density(
             omega, self.hs, self.tp, self.gamma, self.sigma_a, self.sigma_b, self.normalise
         )
 
@@ -182,7 +193,7 @@ class PiersonMoskowitz(AbstractSpectrum):
 def spectral_moment(omega, S, n):
     """m_n = ∫ ωⁿ S(ω) dω (trapezoidal rule on the given grid)."""
     omega = jnp.asarray(omega)
-    return _integrate(omega, omega**n * jnp.asarray(S))
+    return integrate_density(omega, omega**n * jnp.asarray(S))
 
 
 def spectral_periods(omega, S) -> dict:
@@ -234,6 +245,7 @@ def check_frequency_grid(omega, tp, *, points_per_peak_width: float = 2.0) -> No
     spacing near the peak of at most σa·ωp / points_per_peak_width (σa = 0.07 is the peak
     width of the JONSWAP enhancement). Raises ValueError naming 'omega' otherwise.
     """
+    POSITIVE.check("tp", tp)
     w = np.asarray(omega, dtype=float)
     wp = 2 * math.pi / float(tp)
     if w.ndim != 1 or w.size < 3 or not np.all(np.isfinite(w)):
