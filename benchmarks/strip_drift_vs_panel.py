@@ -122,7 +122,7 @@ def rao_rows():
 
     rows = []
     beta = np.radians([0.0, 90.0])
-    rakes = {"barge1": 0.0, "barge2": presets.barge2_rake(T)["extent"]}
+    rakes = {"barge1": 0.0, "barge2": presets.barge2_rake(T).extent}
     for name, (hull, _) in hulls().items():
         s = np.asarray(strip.motions(hull, np.array(RAO_OMEGA), beta, loading=LOADING).rao)
         ds = box_barge_drift(L, B, T, RAO_OMEGA, beta, loading=LOADING, rake=rakes[name]).dataset

@@ -34,9 +34,9 @@ def test_box_mesh_geometry_is_exact(grading):
     assert m.volume == pytest.approx(76.2 * 24.4 * 5.0, rel=1e-12)
     np.testing.assert_allclose(m.centre_of_buoyancy(), [0.0, 0.0, -2.5], atol=1e-10)
     wp = m.waterplane()
-    assert wp["area"] == pytest.approx(76.2 * 24.4, rel=1e-12)
-    assert wp["ixx"] == pytest.approx(24.4 * 76.2**3 / 12, rel=1e-12)
-    assert wp["iyy"] == pytest.approx(76.2 * 24.4**3 / 12, rel=1e-12)
+    assert wp.area == pytest.approx(76.2 * 24.4, rel=1e-12)
+    assert wp.ixx == pytest.approx(24.4 * 76.2**3 / 12, rel=1e-12)
+    assert wp.iyy == pytest.approx(76.2 * 24.4**3 / 12, rel=1e-12)
     # normals point out of the hull: the centroid-to-panel vector has a positive component
     assert np.all(np.sum(m.normals * (m.centres - [0, 0, -2.5]), axis=1) > 0)
     assert m.n_panels == bem.box_barge_mesh(panel_size=3.0).n_panels  # grading keeps the count
@@ -46,13 +46,13 @@ def test_box_mesh_geometry_is_exact(grading):
 def test_barge2_mesh_matches_the_waterline_and_block_coefficient():
     r = jt.presets.barge2_rake()
     m = bem.barge2_mesh(panel_size=2.0)
-    L, B, T = 76.2, 24.4, r["draft"]
-    assert m.volume == pytest.approx(r["block_coefficient"] * L * B * T, rel=1e-12)
+    L, B, T = 76.2, 24.4, r.draft
+    assert m.volume == pytest.approx(r.block_coefficient * L * B * T, rel=1e-12)
     # the raked faces' slope is the waterline flare of the waterline methods' Barge 2
-    bow = m.normals[m.centres[:, 0] > 0.5 * L - r["extent"] + 1e-6]
+    bow = m.normals[m.centres[:, 0] > 0.5 * L - r.extent + 1e-6]
     bow = bow[np.abs(bow[:, 1]) < 1e-9]
     assert np.allclose(
-        np.degrees(np.arctan2(-bow[:, 2], bow[:, 0])), np.degrees(r["flare"]), atol=1e-9
+        np.degrees(np.arctan2(-bow[:, 2], bow[:, 0])), np.degrees(r.flare), atol=1e-9
     )
     p0, p1, _ = m.waterline()
     wl = jt.presets.barge2_waterline()
@@ -128,8 +128,8 @@ def test_near_field_integration_of_the_exact_cylinder_fields_equals_the_closed_f
             cog=np.zeros(3),
         )
         exact = reference.cylinder_drift(a, depth, omega)
-        assert out["force"][0] == pytest.approx(exact, rel=1e-6)
-        assert abs(out["force"][1]) < 1e-9 * exact and np.allclose(out["parts"][2:], 0.0)
+        assert out.force[0] == pytest.approx(exact, rel=1e-6)
+        assert abs(out.force[1]) < 1e-9 * exact and np.allclose(out.parts[2:], 0.0)
 
 
 def test_cylinder_reference_short_wave_limit():
@@ -146,9 +146,9 @@ def test_capytaine_far_and_near_field_reproduce_the_analytic_cylinder():
     m = bem.vertical_cylinder_mesh(10.0, 40.0, panel_size=4.0)
     r = bem.solve_frequency(m, None, 1.0, np.array([math.pi]), fixed=True)  # waves towards +x
     exact = reference.cylinder_drift(10.0, math.inf, 1.0)
-    assert r["far_field"][0, 0] == pytest.approx(exact, rel=0.015)
-    assert r["near_field"][0, 0] == pytest.approx(exact, rel=0.015)
-    assert abs(r["far_field"][0, 1]) < 1e-6 * exact and abs(r["near_field"][0, 1]) < 1e-6 * exact
+    assert r.far_field[0, 0] == pytest.approx(exact, rel=0.015)
+    assert r.near_field[0, 0] == pytest.approx(exact, rel=0.015)
+    assert abs(r.far_field[0, 1]) < 1e-6 * exact and abs(r.near_field[0, 1]) < 1e-6 * exact
 
 
 @needs_capytaine
@@ -261,9 +261,9 @@ def test_symmetric_solve_equals_the_plain_solve():
         plain = bem.solve_frequency(mesh, body, 0.8, beta, symmetry=False)
         sym = bem.solve_frequency(mesh, body, 0.8, beta)
         for k in ("added_mass", "rao", "far_field", "near_field", "sectional"):
-            a, b = np.asarray(plain[k]), np.asarray(sym[k])
+            a, b = np.asarray(getattr(plain, k)), np.asarray(getattr(sym, k))
             assert np.abs(a - b).max() <= tol * np.abs(a).max(), k
-        head = sym["far_field"][0]
+        head = sym.far_field[0]
         assert abs(head[1]) < 1e-9 * abs(head[0]) and abs(head[2]) < 1e-9 * abs(head[0]) * 76.2
 
 
@@ -286,9 +286,9 @@ def test_short_wave_limit_head_seas_far_and_near_field():
     (λ = 9.9 m, kT = 3.2): both methods within 0.05 of the limit (measured −0.482 / −0.458)."""
     m = bem.box_barge_mesh(panel_size=2.0)
     r = bem.solve_frequency(m, bem.rigid_body(m), 2.5, np.array([0.0]))
-    ff, nf = r["far_field"][0, 0] / (RHO_G * 24.4), r["near_field"][0, 0] / (RHO_G * 24.4)
+    ff, nf = r.far_field[0, 0] / (RHO_G * 24.4), r.near_field[0, 0] / (RHO_G * 24.4)
     assert -0.55 < ff < -0.45 and -0.55 < nf < -0.45
-    assert abs(r["far_field"][0, 1]) < 1e-8 * abs(r["far_field"][0, 0])
+    assert abs(r.far_field[0, 1]) < 1e-8 * abs(r.far_field[0, 0])
 
 
 @needs_capytaine

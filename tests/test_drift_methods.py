@@ -70,8 +70,8 @@ def test_box_geometry(box):
 def test_barge2_rake_is_consistent_with_published_mass(barge2):
     r = jt.presets.barge2_rake()
     # the rake's volume loss a·B·T reproduces C_B = m' L / (2B) of Table 3.7
-    assert 1.0 - r["extent"] / 76.2 == pytest.approx(0.5943 * 76.2 / (2 * B))
-    assert math.degrees(r["flare"]) == pytest.approx(47.66, abs=0.01)
+    assert 1.0 - r.extent / 76.2 == pytest.approx(0.5943 * 76.2 / (2 * B))
+    assert math.degrees(r.flare) == pytest.approx(47.66, abs=0.01)
     fl = np.degrees(np.asarray(barge2.flare))
     assert sorted(np.round(fl, 2)) == [0.0, 0.0, 47.66, 47.66, 47.66, 47.66]
 

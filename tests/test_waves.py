@@ -23,9 +23,9 @@ def test_table_3_2_physical_tp_range():
 def test_tp_t1_t2_relations_gamma_3_3(tp):
     """Tp = 1.199 T1 = 1.287 T2 for γ = 3.3 (thesis eq. 3.4); reached to 0.05 %."""
     p = waves.spectral_periods(OMEGA, waves.jonswap(OMEGA, hs=3.0, tp=tp))
-    assert tp / float(p["t1"]) == pytest.approx(1.199, rel=5e-4)
-    assert tp / float(p["t2"]) == pytest.approx(1.287, rel=5e-4)
-    assert float(p["tp"]) == pytest.approx(tp, rel=1e-3)
+    assert tp / float(p.t1) == pytest.approx(1.199, rel=5e-4)
+    assert tp / float(p.t2) == pytest.approx(1.287, rel=5e-4)
+    assert float(p.tp) == pytest.approx(tp, rel=1e-3)
 
 
 def test_normalised_jonswap_hs_exact():
@@ -44,7 +44,7 @@ def test_normalised_jonswap_hs_exact():
     )
     S = waves.pierson_moskowitz(OMEGA, hs=2.4, tp=7.0)
     assert 4 * np.sqrt(float(waves.spectral_moment(OMEGA, S, 0))) == pytest.approx(2.4, rel=1e-5)
-    assert float(waves.spectral_periods(OMEGA, S)["tp"]) == pytest.approx(7.0, rel=1e-3)
+    assert float(waves.spectral_periods(OMEGA, S).tp) == pytest.approx(7.0, rel=1e-3)
 
 
 def test_spectrum_modules_match_functions_and_units():

@@ -74,11 +74,11 @@ def rigid_body(
     inertia = m * np.diag([kxx**2, kyy**2, kzz**2])
     wp = mesh.waterplane()
     xg, yg = cog[0], cog[1]
-    A = wp["area"]
-    Sx, Sy = wp["sx"] - xg * A, wp["sy"] - yg * A  # ∬ (x − x_G), ∬ (y − y_G)
-    Ixx = wp["ixx"] - 2 * xg * wp["sx"] + xg**2 * A  # ∬ (x − x_G)²
-    Iyy = wp["iyy"] - 2 * yg * wp["sy"] + yg**2 * A
-    Ixy = wp["ixy"] - xg * wp["sy"] - yg * wp["sx"] + xg * yg * A
+    A = wp.area
+    Sx, Sy = wp.sx - xg * A, wp.sy - yg * A  # ∬ (x − x_G), ∬ (y − y_G)
+    Ixx = wp.ixx - 2 * xg * wp.sx + xg**2 * A  # ∬ (x − x_G)²
+    Iyy = wp.iyy - 2 * yg * wp.sy + yg**2 * A
+    Ixy = wp.ixy - xg * wp.sy - yg * wp.sx + xg * yg * A
     water = Water(rho=rho, g=g)
     C = np.asarray(hydrostatic_restoring((A, Sx, Sy, Ixx, Iyy, Ixy), V, xb[2], cog[2], water=water))
     if C[3, 3] <= 0:

@@ -73,27 +73,27 @@ def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
 
 
 def _frequency_dataset(r: dict):
-    w = [r["omega"]]
+    w = [r.omega]
     dims_b = ("omega", "beta")
-    rao, exc = r["rao"][None], r["excitation"][None]
+    rao, exc = r.rao[None], r.excitation[None]
     ds = xr.Dataset(
         {
             "rao_real": (dims_b + ("dof",), rao.real),
             "rao_imag": (dims_b + ("dof",), rao.imag),
             "excitation_real": (dims_b + ("dof",), exc.real),
             "excitation_imag": (dims_b + ("dof",), exc.imag),
-            "added_mass": (("omega", "dof", "dof_j"), r["added_mass"][None]),
-            "radiation_damping": (("omega", "dof", "dof_j"), r["damping"][None]),
-            "viscous_damping": (("omega", "dof", "dof_j"), r["viscous_damping"][None]),
-            "far_field": (dims_b + ("component",), r["far_field"][None]),
-            "near_field": (dims_b + ("component",), r["near_field"][None]),
-            "near_field_parts": (dims_b + ("part", "component"), r["near_field_parts"][None]),
-            "sectional_moments": (dims_b + ("axis", "order"), r["sectional"][None]),
-            "wavenumber": (("omega",), [r["wavenumber"]]),
+            "added_mass": (("omega", "dof", "dof_j"), r.added_mass[None]),
+            "radiation_damping": (("omega", "dof", "dof_j"), r.damping[None]),
+            "viscous_damping": (("omega", "dof", "dof_j"), r.viscous_damping[None]),
+            "far_field": (dims_b + ("component",), r.far_field[None]),
+            "near_field": (dims_b + ("component",), r.near_field[None]),
+            "near_field_parts": (dims_b + ("part", "component"), r.near_field_parts[None]),
+            "sectional_moments": (dims_b + ("axis", "order"), r.sectional[None]),
+            "wavenumber": (("omega",), [r.wavenumber]),
         },
         coords={
             "omega": w,
-            "beta": r["beta"],
+            "beta": r.beta,
             "dof": list(DOFS),
             "dof_j": list(DOFS),
             "component": list(FORCE_COMPONENTS),

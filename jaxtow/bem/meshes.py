@@ -32,6 +32,19 @@ from .. import presets
 
 
 @dataclasses.dataclass(frozen=True)
+class Waterplane:
+    """A waterplane's area [m²] and its moments about the mesh's axes: ``sx`` = ∬x dA,
+    ``sy`` = ∬y dA [m³], ``ixx`` = ∬x² dA, ``iyy`` = ∬y² dA, ``ixy`` = ∬xy dA [m⁴]."""
+
+    area: float
+    sx: float
+    sy: float
+    ixx: float
+    iyy: float
+    ixy: float
+
+
+@dataclasses.dataclass(frozen=True)
 class HullMesh:
     """Wetted hull panels and lid: ``vertices`` (nv, 3), ``faces`` (nf, 4) int, ``lid_vertices``,
     ``lid_faces`` (the waterplane, may be empty), ``name``, ``panel_size`` [m] (nominal) and
@@ -103,7 +116,7 @@ class HullMesh:
         p0[flip], p1[flip] = p1[flip].copy(), p0[flip].copy()
         return p0, p1, owner
 
-    def waterplane(self) -> dict:
+    def waterplane(self) -> Waterplane:
         """Exact waterplane properties from the waterline polygon (Green's theorem on the
         segments): area, first moments ∬x, ∬y and second moments ∬x², ∬y², ∬xy [m^k]."""
         p0, p1, _ = self.waterline()
@@ -117,7 +130,7 @@ class HullMesh:
         ixx = np.sum((x0 * x0 + x0 * x1 + x1 * x1) * cr) / 12.0  # ∬ x² dA
         iyy = np.sum((y0 * y0 + y0 * y1 + y1 * y1) * cr) / 12.0
         ixy = np.sum((x0 * y1 + 2 * x0 * y0 + 2 * x1 * y1 + x1 * y0) * cr) / 24.0
-        return dict(
+        return Waterplane(
             area=float(area),
             sx=float(sx),
             sy=float(sy),
@@ -290,8 +303,8 @@ def barge2_mesh(
     return raked_barge_mesh(
         presets.BARGE2_LENGTH,
         presets.BARGE2_BREADTH,
-        r["draft"],
-        r["extent"],
+        r.draft,
+        r.extent,
         panel_size=panel_size,
         grading=grading,
         lid=lid,

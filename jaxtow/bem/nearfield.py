@@ -32,6 +32,8 @@ thesis), M_x,j = Σ x_c^j dF_x and M_y,j = Σ x_c^j dF_y, j = 0, 1, 2, x_c measu
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 
@@ -47,6 +49,16 @@ def displacement(points, motion, cog):
     xi = motion[..., None, :3]
     al = motion[..., None, 3:]
     return xi + np.cross(al, r)
+
+
+@dataclasses.dataclass(frozen=True)
+class NearFieldDrift:
+    """`near_field_drift`'s answer per heading: the mean drift ``force`` (fx, fy, nz), its
+    ``parts`` I-IV, and the ``sectional`` moments for the yaw-rate drift damping."""
+
+    force: np.ndarray
+    parts: np.ndarray
+    sectional: np.ndarray
 
 
 def near_field_drift(*, omega, rho, g, panels, waterline, mass, inertia, cog, motion=None):
@@ -107,7 +119,7 @@ def near_field_drift(*, omega, rho, g, panels, waterline, mass, inertia, cog, mo
     sectional = np.stack(
         [np.sum(xs[:, None] ** j * dF, axis=-2) for j in range(3)], axis=-1
     )  # (..., 2, 3)
-    return dict(force=parts.sum(axis=-2), parts=parts, sectional=sectional)
+    return NearFieldDrift(force=parts.sum(axis=-2), parts=parts, sectional=sectional)
 
 
 def surface_gradient_operator(

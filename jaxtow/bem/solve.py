@@ -136,6 +136,28 @@ def kochin(centres, areas, sources, theta, wavenumber: float, water_depth: float
     return (zs @ sources).T / (4 * np.pi)
 
 
+@dataclasses.dataclass(frozen=True)
+class FrequencySolution:
+    """One frequency of a panel solve (`solve_frequency`): ``omega`` [rad/s], the headings
+    ``beta``, the ``added_mass``, radiation ``damping`` and ``viscous_damping`` (6, 6), the
+    ``excitation`` and ``rao`` (β, 6), the ``far_field`` and ``near_field`` mean drift (β, 3),
+    the near field's ``near_field_parts`` (β, 4, 3) and ``sectional`` moments, and the
+    ``wavenumber``."""
+
+    omega: float
+    beta: np.ndarray
+    added_mass: np.ndarray
+    damping: np.ndarray
+    viscous_damping: np.ndarray
+    excitation: np.ndarray
+    rao: np.ndarray
+    far_field: np.ndarray
+    near_field: np.ndarray
+    near_field_parts: np.ndarray
+    sectional: np.ndarray
+    wavenumber: float
+
+
 def solve_frequency(
     mesh: HullMesh,
     body: RigidBody | None,
@@ -240,7 +262,7 @@ def solve_frequency(
         cog=body.cog,
         motion=rao,
     )
-    return dict(
+    return FrequencySolution(
         omega=float(omega),
         beta=beta,
         added_mass=A,
@@ -249,9 +271,9 @@ def solve_frequency(
         excitation=exc,
         rao=rao,
         far_field=ff,
-        near_field=nf["force"],
-        near_field_parts=nf["parts"],
-        sectional=nf["sectional"],
+        near_field=nf.force,
+        near_field_parts=nf.parts,
+        sectional=nf.sectional,
         wavenumber=k,
     )
 

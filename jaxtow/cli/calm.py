@@ -27,7 +27,10 @@ def cmd_calm(args):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sets = parse_sets(args.set)
-    models = dict(tow_model(args, name, sets, "calm")[::-1] for name in tow_names(args, "calm"))
+    models = {}
+    for name in tow_names(args, "calm"):
+        model, vname = tow_model(args, name, sets, "calm")
+        models[vname] = model
     td = None if args.no_time_domain else time_domain_settings(args)
     try:
         study = jt.studies.calm_study(

@@ -49,6 +49,7 @@ from .._lazy import attach as _attach
 if TYPE_CHECKING:
     from ._barge2 import (
         VESSELS as VESSELS,
+        Rake as Rake,
         barge2_hull as barge2_hull,
         barge2_rake as barge2_rake,
         barge2_resistance as barge2_resistance,

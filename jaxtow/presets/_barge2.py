@@ -4,6 +4,7 @@ model, sea states and tug, built from the values of `jaxtow._values`."""
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from .._towline import Towline
 from .._units import TONNE_FORCE, Scales
@@ -31,15 +32,27 @@ def barge2_scales(u_tug: float = U_TUG_DEFAULT, draft: float | None = None) -> S
     return Scales(length=BARGE2_LENGTH, draft=d, u_tug=u_tug)
 
 
-def barge2_rake(draft: float | None = None) -> dict:
-    """Rake geometry of Barge 2 (see the module docstring): horizontal extent ``a`` [m] of
-    each end rake below the waterline, its angle to the horizontal and the waterline flare
-    η (angle of the raked face from the vertical) [rad]."""
+@dataclass(frozen=True)
+class Rake:
+    """The rake of Barge 2's ends: the horizontal ``extent`` a [m] of each end rake below
+    the waterline, its ``angle`` to the horizontal and the waterline ``flare`` η (the raked
+    face's angle from the vertical) [rad], at ``draft`` [m], with the hull's
+    ``block_coefficient``."""
+
+    extent: float
+    angle: float
+    flare: float
+    draft: float
+    block_coefficient: float
+
+
+def barge2_rake(draft: float | None = None) -> Rake:
+    """Rake geometry of Barge 2 (see the module docstring), a `Rake`."""
     T = ASSUMPTIONS["draft"]["value"] if draft is None else float(draft)
     cb = block_coefficient_from_mass(TABLE_3_7["2a"]["m"], BARGE2_LENGTH, BARGE2_BREADTH)
     a = (1.0 - cb) * BARGE2_LENGTH
     angle = math.atan2(T, a)
-    return dict(extent=a, angle=angle, flare=0.5 * math.pi - angle, draft=T, block_coefficient=cb)
+    return Rake(extent=a, angle=angle, flare=0.5 * math.pi - angle, draft=T, block_coefficient=cb)
 
 
 def box_waterline(
@@ -63,9 +76,9 @@ def barge2_waterline(draft: float | None = None) -> Waterline:
     r = barge2_rake(draft)
     a, b = 0.5 * BARGE2_LENGTH, 0.5 * BARGE2_BREADTH
     half = [(a, 0.0), (a, b), (-a, b), (-a, 0.0)]
-    pts, fl, _ = mirror_half(half, flare=[r["flare"], 0.0, r["flare"]])
+    pts, fl, _ = mirror_half(half, flare=[r.flare, 0.0, r.flare])
     return waterline(
-        pts, draft=r["draft"], flare=fl, block_coefficient=r["block_coefficient"], name="barge2"
+        pts, draft=r.draft, flare=fl, block_coefficient=r.block_coefficient, name="barge2"
     )
 
 
@@ -73,7 +86,7 @@ def barge2_hull(draft: float | None = None, *, n_stations: int = 21):
     """Barge 2 for strip theory (`jaxtow.strip.raked_box`): 76.2 × 24.4 m with the raked bow
     and stern of `barge2_rake` (the same hull as the panel pipeline's `barge2_mesh`)."""
     r = barge2_rake(draft)
-    return raked_box(BARGE2_LENGTH, BARGE2_BREADTH, r["draft"], r["extent"], n_stations=n_stations)
+    return raked_box(BARGE2_LENGTH, BARGE2_BREADTH, r.draft, r.extent, n_stations=n_stations)
 
 
 def _barge2(version: str, draft: float | None) -> Vessel:

@@ -86,7 +86,7 @@ class AbstractAddedResistanceMethod(eqx.Module):
     name: ClassVar[str]
 
     @abc.abstractmethod
-    def resistance(self, hull: Hull, solve: MotionSolve, water: Water): ...
+    def resistance(self, hull: Hull, solve: MotionSolve, water: Water) -> Array: ...
 
     def valid(self, motions: Motions):
         return motions.valid

@@ -27,6 +27,7 @@ from .._equilibrium import equilibria, straight_behind
 from .._parameters import get_parameter, with_parameters
 from .._roots import bisect, bisect_fixed
 from .._stability import STABLE, stability
+from .._towline import CatenaryTowline, CompositeTowline
 from .._units import KNOT, TONNE_FORCE
 from ._records import AdviceRow, StudySummary
 
@@ -219,7 +220,11 @@ def seabed_advice(tow, model, s: StudySummary) -> AdviceRow | None:
     by the catenary of the full equilibrium and the stability at that length."""
     line = model.towline
     cat = s.towline.catenary if s.towline is not None else None
-    if cat is None or tow.water_depth is None or not hasattr(line, "sag"):
+    if (
+        cat is None
+        or tow.water_depth is None
+        or not isinstance(line, (CatenaryTowline, CompositeTowline))
+    ):
         return None
     need = tow.water_depth - tow.criteria.seabed_clearance
     if cat.sag_m <= need:
@@ -228,8 +233,9 @@ def seabed_advice(tow, model, s: StudySummary) -> AdviceRow | None:
     T = float(model.vessel.R0)
 
     def sag(l0):
-        m = with_parameters(model, l0=l0)
-        return m.towline.sag(m.towline.length_at_tension(T)) * L
+        m = with_parameters(model, l0=l0).towline
+        assert isinstance(m, (CatenaryTowline, CompositeTowline))
+        return m.sag(m.length_at_tension(T)) * L
 
     l00 = float(line.l0)
     lo = 0.05 * l00
@@ -250,7 +256,9 @@ def seabed_advice(tow, model, s: StudySummary) -> AdviceRow | None:
     changed = with_parameters(model, l0=l0)
     eqs = equilibria(changed)
     k = int(np.argmin(np.where(np.asarray(eqs.valid), np.abs(np.asarray(eqs.psi)), np.inf)))
-    new_sag = float(changed.towline.sag(eqs.state[k, 3])) * L
+    new_line = changed.towline
+    assert isinstance(new_line, (CatenaryTowline, CompositeTowline))
+    new_sag = float(new_line.sag(eqs.state[k, 3])) * L
     return AdviceRow(
         **row,
         value=l0,

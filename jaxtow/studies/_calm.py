@@ -21,14 +21,14 @@ from .._metrics import (
     trajectory,
 )
 from .._results import sweep
-from .._simulate import initial_state, simulate
+from .._simulate import Simulation, initial_state, simulate
 from ._conditions import condition
 from ._records import Condition, Record, TimeDomainRecord
 
 __all__ = ["CalmRecord", "CalmStudy", "TimeDomainRun", "calm_study", "time_domain_run"]
 
 
-class CalmRecord(Record):
+class CalmRecord(Record, frozen=True, kw_only=True):
     """One tow in calm water: the course-stability coefficient c (> 0: course stable), the
     design point (x_p', l0', EA'), the equilibria there (`Condition`), the range of the
     straight-behind max Re λ' over the l0' sweep, the estimates it rests on, and the
@@ -54,7 +54,7 @@ class TimeDomainRun:
     `FishtailMetrics`, its `ForceHistory`, the share of the run inside each validity flag
     and its typed ``record``."""
 
-    simulation: object
+    simulation: Simulation
     trajectory: Trajectory
     metrics: FishtailMetrics
     forces: ForceHistory

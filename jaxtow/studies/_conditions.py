@@ -85,7 +85,8 @@ def condition(model, name: str, kind: str, sea=None) -> Condition:
     force, rate = float(sc.force), float(sc.u_tug) / sc.length
     found = np.asarray(eqs.valid)
     straight = straight_behind(np.asarray(eqs.psi), found)
-    rows, outside_all = [], set()
+    rows: list[EquilibriumRow] = []
+    outside_all: set[str] = set()
     for i in range(len(eqs)):
         flags = validity(model, eqs.state[i])
         bools = {k: bool(v) for k, v in flags.items() if jnp.asarray(v).dtype == bool}
@@ -107,7 +108,7 @@ def condition(model, name: str, kind: str, sea=None) -> Condition:
             )
         )
     key = yaw_verdict(eqs.psi, st.max_real, found, np.asarray(st.stability))
-    outside = sorted(outside_all)
+    outside: list[str] = sorted(outside_all)
     text = YAW_VERDICTS[key]
     words = [VALIDITY_WORDS.get(k, k) for k in outside]
     if outside and key != "invalid":

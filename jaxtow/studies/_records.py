@@ -50,7 +50,7 @@ class Record(msgspec.Struct, frozen=True, kw_only=True):
     """Base of the study's records."""
 
 
-class EquilibriumRow(Record):
+class EquilibriumRow(Record, frozen=True, kw_only=True):
     """One equilibrium: heading ``psi_deg`` and towline angle ``gamma_deg`` [deg], towline
     tension ``tension`` [N] (``tension_nd`` by ½ρTLU²), the largest real part of its
     eigenvalues ``max_real`` [1/s] (``max_real_nd`` by U/L), its ``stability`` (stable,
@@ -72,7 +72,7 @@ class EquilibriumRow(Record):
     straight: bool
 
 
-class Bounds(Record):
+class Bounds(Record, frozen=True, kw_only=True):
     """The verdict repeated under the bounds that still hold where the forward-speed drift
     theory is outside its validity: drift form → verdict key, and whether any differs."""
 
@@ -80,7 +80,7 @@ class Bounds(Record):
     changes: bool
 
 
-class Condition(Record):
+class Condition(Record, frozen=True, kw_only=True):
     """The equilibria and stability of the tow in one condition: its ``name`` ("calm water",
     "sea state survival", "sea state survival at 2.34 m/s"), ``kind`` (calm, sea state,
     operating speed), the ``sea_state`` it belongs to, the tow ``speed`` [m/s], the scales
@@ -115,7 +115,7 @@ class Condition(Record):
         return min(rows, key=lambda e: abs(e.psi_deg), default=None)
 
 
-class MeanDriftRow(Record):
+class MeanDriftRow(Record, frozen=True, kw_only=True):
     """The mean surge drift [N] of the hull in one sea state, at rest and at the design
     speed (negative: pushing the tow astern)."""
 
@@ -126,7 +126,7 @@ class MeanDriftRow(Record):
     fx_design_speed: float
 
 
-class DriftRecord(Record):
+class DriftRecord(Record, frozen=True, kw_only=True):
     """The hull's wave drift: its ``source`` (the one drift source every result uses), the
     head-sea surge at the highest frequency against the short-wave wall limit ½ρgB, and the
     mean drift in each sea state."""
@@ -136,7 +136,7 @@ class DriftRecord(Record):
     mean_drift: list[MeanDriftRow]
 
 
-class ResistanceRow(Record):
+class ResistanceRow(Record, frozen=True, kw_only=True):
     """One sea state's resistance: the sea, the tug's ``efficiency`` in it, the components at
     zero speed (``hold``, [N] by `jaxtow.resistance.COMPONENTS`) and their sum
     ``hold_towing_force``, the ``required_bollard_pull`` [N] (and its worst over the
@@ -179,7 +179,7 @@ class ResistanceRow(Record):
         return self.worst_tp if worst > self.required_bollard_pull and self.worst_tp else self.tp
 
 
-class TugRecord(Record):
+class TugRecord(Record, frozen=True, kw_only=True):
     """The tug: rated ``bollard_pull`` [N], ``free_speed`` [m/s], its ``efficiency`` and
     the sea states that give their own (``efficiencies``)."""
 
@@ -190,7 +190,7 @@ class TugRecord(Record):
     efficiency_estimate: bool = False
 
 
-class LineSegmentRow(Record):
+class LineSegmentRow(Record, frozen=True, kw_only=True):
     """One piece of the towline's make (`jaxtow.tow.LineSegment`)."""
 
     name: str
@@ -202,7 +202,7 @@ class LineSegmentRow(Record):
     source: str
 
 
-class StrengthRecord(Record):
+class StrengthRecord(Record, frozen=True, kw_only=True):
     """The towline's make and its loads: the pieces, the weakest in series and its ``mbl``
     [N]; the largest mean end tension over calm water and every sea state [N] (where the
     study got that far) with the condition it is in, its share of the MBL, and MBL / BP."""
@@ -216,7 +216,7 @@ class StrengthRecord(Record):
     mbl_over_bollard_pull: float | None = None
 
 
-class CatenaryRecord(Record):
+class CatenaryRecord(Record, frozen=True, kw_only=True):
     """The catenary of a line with weight at the calm-water equilibrium nearest straight
     behind: span, horizontal and end tension [N], sag [m], effective and elastic stiffness
     (non-dimensional), and against the water depth its seabed clearance."""
@@ -231,7 +231,7 @@ class CatenaryRecord(Record):
     seabed_clearance_m: float | None = None
 
 
-class TowlineRecord(Record):
+class TowlineRecord(Record, frozen=True, kw_only=True):
     """The towline: unstretched length ``length_m`` [m] (``l0`` by L), attachment ``xp``,
     ``yp`` by L (to port), ``EA`` [N] (``EA_nd``), and its catenary and strength."""
 
@@ -245,7 +245,7 @@ class TowlineRecord(Record):
     strength: StrengthRecord | None = None
 
 
-class MapRecord(Record):
+class MapRecord(Record, frozen=True, kw_only=True):
     """The calm-water stability map around the design point: its grids [lo, hi, n] by L,
     the ``design_xp``, ``design_l0`` (by L), the tow's length [m] for the dimensional axes,
     and the share of the map where the straight-behind equilibrium is stable."""
@@ -258,7 +258,7 @@ class MapRecord(Record):
     straight_stable_share: float
 
 
-class TimeDomainRecord(Record):
+class TimeDomainRecord(Record, frozen=True, kw_only=True):
     """The calm-water run from a disturbed start (heading ``psi0_deg``, sway ``y0`` by L, for
     ``t1`` by L/U) and its fishtailing metrics (`jaxtow.FishtailMetrics`), with the
     run's validity flags."""
@@ -274,7 +274,7 @@ class TimeDomainRecord(Record):
     validity: dict[str, bool]
 
 
-class CheckRow(Record):
+class CheckRow(Record, frozen=True, kw_only=True):
     """One criterion of the guideline: ``key`` (stable, for scripts), the ``criterion`` in
     words and its ``condition``, ``value`` against ``limit`` (``kind`` min: value ≥ limit;
     max: value ≤ limit) in ``units``, the ``margin``, the ``verdict`` (`CHECK_VERDICTS`:
@@ -304,7 +304,7 @@ class CheckRow(Record):
         return self.verdict == "pass"
 
 
-class OperatingRow(Record):
+class OperatingRow(Record, frozen=True, kw_only=True):
     """One sea state's operating point: the ``speed`` [m/s] (None when the tug cannot hold
     the tow), the pull the tug gives the towline there ``available_pull`` [N], and the
     towline tension of the stability model at that speed ``towline_tension`` [N]: the same
@@ -320,7 +320,7 @@ class OperatingRow(Record):
     transit_time_h: float | None = None
 
 
-class FindingRow(Record):
+class FindingRow(Record, frozen=True, kw_only=True):
     """A plausibility finding of the tow file (`jaxtow.tow.Finding`)."""
 
     key: str
@@ -328,7 +328,7 @@ class FindingRow(Record):
     parameter: str = ""
 
 
-class Assessment(Record):
+class Assessment(Record, frozen=True, kw_only=True):
     """The decision: ``verdict`` (`VERDICTS`) and the one sentence of why (``reason``), the
     ``guideline`` and its ``checks``, the ``operating`` point of each sea state, and the
     ``findings`` a planner must read (plain sentences, the most serious first)."""
@@ -349,7 +349,7 @@ class Assessment(Record):
         return {v: sum(c.verdict == v for c in self.checks) for v in CHECK_VERDICTS}
 
 
-class AdviceRow(Record):
+class AdviceRow(Record, frozen=True, kw_only=True):
     """One way forward: for ``condition``, change ``what`` (``kind``: a tow parameter, skegs,
     the line for the seabed, a larger tug) from ``present_text`` to ``value_text`` (None
     where no value in ``searched_text`` does it), with the tow-file line that makes it
@@ -371,7 +371,7 @@ class AdviceRow(Record):
     note: str = ""
 
 
-class Incomplete(Record):
+class Incomplete(Record, frozen=True, kw_only=True):
     """Where a study stopped: the ``step`` running, what went wrong (``error``), and whether
     it was a Ctrl-C."""
 
@@ -380,7 +380,7 @@ class Incomplete(Record):
     interrupted: bool
 
 
-class StudySummary(Record):
+class StudySummary(Record, frozen=True, kw_only=True):
     """Everything a tow study found, typed: the tow and its scales, the drift, the
     resistance and operating points, the ``conditions`` (calm water, each sea state at the
     design speed and at its operating speed), the map, the time-domain check, the

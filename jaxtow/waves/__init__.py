@@ -21,6 +21,7 @@ if TYPE_CHECKING:
         AbstractSpectrum as AbstractSpectrum,
         Jonswap as Jonswap,
         PiersonMoskowitz as PiersonMoskowitz,
+        SpectralPeriods as SpectralPeriods,
         check_frequency_grid as check_frequency_grid,
         hz_to_omega as hz_to_omega,
         jonswap as jonswap,

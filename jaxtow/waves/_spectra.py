@@ -15,7 +15,7 @@ import numpy as np
 from jaxtyping import Array, Float
 
 from .._rules import (
-    NONNEGATIVE,
+    FINITE,
     POSITIVE,
     Checked,
     at_least,
@@ -95,7 +95,7 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
     POSITIVE.check("hs", hs)
     POSITIVE.check("tp", tp)
     GAMMA_RULE.check("gamma", gamma)
-    NONNEGATIVE.check("omega", omega)
+    FINITE.check("omega", omega)
     s = jonswap_density(omega, hs, tp, gamma, sigma_a, sigma_b, normalise)
     # under jit or vmap the eager checks cannot see the values: the same rules, traced
     return guard(
@@ -104,7 +104,7 @@ def jonswap(omega, *, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: 
             POSITIVE.traced("hs", hs),
             POSITIVE.traced("tp", tp),
             GAMMA_RULE.traced("gamma", gamma),
-            NONNEGATIVE.traced("omega", omega),
+            FINITE.traced("omega", omega),
         ],
     )
 
@@ -196,7 +196,18 @@ def spectral_moment(omega, S, n):
     return integrate_density(omega, omega**n * jnp.asarray(S))
 
 
-def spectral_periods(omega, S) -> dict:
+class SpectralPeriods(eqx.Module):
+    """`spectral_periods`'s answer: the significant wave height ``hs`` = 4√m0 [m], the mean
+    period ``t1`` = 2π m0/m1, the zero-crossing period ``t2`` = 2π √(m0/m2) and the peak
+    period ``tp`` [s] (thesis eq. 3.4)."""
+
+    hs: Array
+    t1: Array
+    t2: Array
+    tp: Array
+
+
+def spectral_periods(omega, S) -> SpectralPeriods:
     """Hs = 4√m0, T1 = 2π m0/m1, T2 = 2π √(m0/m2) and the peak period Tp (thesis eq. 3.4).
     A spectrum of zero area (no sea: the periods are undefined) is refused eagerly."""
     m0, m1, m2 = (spectral_moment(omega, S, n) for n in (0, 1, 2))
@@ -206,7 +217,7 @@ def spectral_periods(omega, S) -> dict:
             "undefined"
         )
     omega = jnp.asarray(omega)
-    return dict(
+    return SpectralPeriods(
         hs=4 * jnp.sqrt(m0),
         t1=2 * jnp.pi * m0 / m1,
         t2=2 * jnp.pi * jnp.sqrt(m0 / m2),
