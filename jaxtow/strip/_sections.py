@@ -49,6 +49,7 @@ import jax
 import jax.numpy as jnp
 from jaxtyping import Array, Complex, Float
 
+from .._units import SEA_WATER, Water
 from ._expint import exp_ei
 
 #: The lid's panels per body panel (at least 2), for the extended boundary condition: no
@@ -240,15 +241,15 @@ def _solve(y, z, omega, rho, g, n_lid):
     return jax.vmap(lambda w: _solve_one(y, z, w, rho, g, n_lid))(omega)
 
 
-def section_coefficients(y, z, omega, *, rho: float = 1025.0, g: float = 9.80665, n_lid=None):
+def section_coefficients(y, z, omega, *, water: Water = SEA_WATER, n_lid=None):
     """Added mass, damping and beam-sea exciting forces of a symmetric section per unit
     length (module docstring), by Frank's close-fit method with an interior lid.
 
     ``y``, ``z``: the half offsets [m], ordered from the waterline (y = B/2, z = 0) to the
     keel on the centreline (y = 0, z = −T); straight panels join them. ``omega``: a scalar
     or 1-D array [rad/s], > 0. ``n_lid``: panels on the half lid (default: half the body's,
-    at least 2; 0 leaves the lid out, and the irregular frequencies in). Differentiable in
-    the offsets and ω (vmapped over ω)."""
+    at least 2; 0 leaves the lid out, and the irregular frequencies in); ``water``: ρ and g
+    (`jaxtow.Water`). Differentiable in the offsets and ω (vmapped over ω)."""
     y = jnp.asarray(y, dtype=float)
     z = jnp.asarray(z, dtype=float)
     if y.ndim != 1 or y.shape != z.shape or y.shape[0] < 3:
@@ -262,7 +263,9 @@ def section_coefficients(y, z, omega, *, rho: float = 1025.0, g: float = 9.80665
     omega = jnp.asarray(omega, dtype=float)
     if omega.ndim > 1:
         raise ValueError(f"omega must be a scalar or a 1-D array, got shape {omega.shape}")
-    added, damping, exciting, potentials = _solve(y, z, omega.reshape(-1), rho, g, n_lid)
+    added, damping, exciting, potentials = _solve(
+        y, z, omega.reshape(-1), water.rho, water.g, n_lid
+    )
     shape = omega.shape
     # the half section's area by the shoelace formula over the closed contour
     area = 2.0 * 0.5 * jnp.abs(jnp.sum(y[:-1] * z[1:] - y[1:] * z[:-1]))

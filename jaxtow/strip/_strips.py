@@ -81,9 +81,7 @@ def section_table(hull: Hull, omega, *, water: Water = SEA_WATER) -> SectionTabl
     > 0): the close-fit solve of every station, vmapped over the stations. Differentiable in
     the offsets and the frequencies."""
     omega = jnp.atleast_1d(jnp.asarray(omega, dtype=float))
-    secs = jax.vmap(lambda y, z: section_coefficients(y, z, omega, rho=water.rho, g=water.g))(
-        hull.y, hull.z
-    )
+    secs = jax.vmap(lambda y, z: section_coefficients(y, z, omega, water=water))(hull.y, hull.z)
     return SectionTable(
         omega=omega,
         added_mass=secs.added_mass,
