@@ -124,6 +124,7 @@ if TYPE_CHECKING:
         StabilityResult as StabilityResult,
         characteristic_polynomial as characteristic_polynomial,
         classify as classify,
+        default_eig_method as default_eig_method,
         eigenvalues as eigenvalues,
         hurwitz_determinants as hurwitz_determinants,
         jacobian as jacobian,

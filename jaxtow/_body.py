@@ -105,7 +105,11 @@ class Loading(Checked):
     ``radii`` (k_xx, k_yy, k_zz) about it [m] (None: `radii_of_gyration` of the hull, an
     estimate); ``roll_damping`` the linear viscous roll damping as a fraction of critical
     (default `ASSUMPTIONS['roll_damping']`, an estimate: potential flow alone leaves the
-    roll resonance unbounded). Array fields: differentiable and vmappable."""
+    roll resonance unbounded). Array fields: differentiable and vmappable.
+
+    ``Loading()`` puts G in the waterline plane (strip theory's default, right for a hull of
+    any size); ``Loading.estimate(draft)`` is the thesis's KG of Barge 1 and 2 (the panel
+    side's default, `ASSUMPTIONS['cog_z']`); ``Loading.above_keel(kg, draft)`` converts a KG."""
 
     z_g: Float[Array, ""] = rule_field(rule=FINITE, converter=_float, default=0.0)
     x_g: Float[Array, ""] | None = rule_field(rule=FINITE, converter=_radii, default=None)

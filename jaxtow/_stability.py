@@ -45,13 +45,28 @@ EIG_METHODS = ("lapack", "polynomial")
 ABSCISSA_METHODS = (*EIG_METHODS, "routh")
 
 
+def default_eig_method(platform: str | None = None) -> str:
+    """The eigenvalue method that runs well on ``platform`` (default: JAX's default backend):
+    "lapack" on the CPU (LAPACK's geev, the fastest there), "polynomial" on every other
+    backend. A GPU has no batched nonsymmetric eigensolver: ``jnp.linalg.eigvals`` there
+    runs matrix by matrix (one 16,384-point chunk of a sweep did not finish in 200 s on an
+    H200), where the characteristic polynomial's roots are plain batched arithmetic."""
+    platform = jax.default_backend() if platform is None else platform
+    return "lapack" if platform == "cpu" else "polynomial"
+
+
+def _method(method: str | None) -> str:
+    return default_eig_method() if method is None else method
+
+
 def eigenvalues(
-    model: TowModel, y: Float[Array, "6"], method: str = "lapack", *, throw: bool = True
+    model: TowModel, y: Float[Array, "6"], method: str | None = None, *, throw: bool = True
 ) -> Complex[Array, "6"]:
     """Eigenvalues of the Jacobian at y (non-dimensional, per L/U_tug).
 
-    ``method="lapack"`` (default): `jnp.linalg.eigvals` (LAPACK geev on CPU, cuSOLVER on
-    GPU). ``method="polynomial"``: roots of the characteristic polynomial by Aberth-Ehrlich
+    ``method``: None (default) picks `default_eig_method` for the backend ("lapack" on the
+    CPU, "polynomial" elsewhere). ``method="lapack"``: `jnp.linalg.eigvals` (LAPACK geev).
+    ``method="polynomial"``: roots of the characteristic polynomial by Aberth-Ehrlich
     iteration, pure JAX arithmetic with no library call (agrees with LAPACK to ~1e-9 on the
     tow Jacobians; slower than LAPACK on CPU). When only max Re λ is wanted,
     `spectral_abscissa` is faster than both. ``throw``: check the model's parameters (see
@@ -61,8 +76,9 @@ def eigenvalues(
     return guard(lam, model.checks()) if throw else lam
 
 
-def matrix_eigenvalues(A: Float[Array, "n n"], method: str = "lapack") -> Complex[Array, " n"]:
+def matrix_eigenvalues(A: Float[Array, "n n"], method: str | None = None) -> Complex[Array, " n"]:
     """Eigenvalues of a given matrix by ``method`` (see `eigenvalues`)."""
+    method = _method(method)
     if method == "lapack":
         return jnp.linalg.eigvals(A)
     if method == "polynomial":
@@ -70,10 +86,13 @@ def matrix_eigenvalues(A: Float[Array, "n n"], method: str = "lapack") -> Comple
     raise ValueError(f"parameter 'method' must be one of {EIG_METHODS}, got {method!r}")
 
 
-def matrix_max_real_eigenvalue(A: Float[Array, "n n"], method: str = "lapack") -> Float[Array, ""]:
+def matrix_max_real_eigenvalue(
+    A: Float[Array, "n n"], method: str | None = None
+) -> Float[Array, ""]:
     """max Re λ(A), the spectral abscissa of a given matrix, by ``method`` (one of
     `ABSCISSA_METHODS`: the eigenvalue methods of `eigenvalues`, or "routh",
     `spectral_abscissa`)."""
+    method = _method(method)
     if method == "routh":
         return spectral_abscissa(A)
     if method not in EIG_METHODS:
@@ -82,7 +101,7 @@ def matrix_max_real_eigenvalue(A: Float[Array, "n n"], method: str = "lapack") -
 
 
 def max_real_eigenvalue(
-    model: TowModel, y: Float[Array, "6"], method: str = "lapack", *, throw: bool = True
+    model: TowModel, y: Float[Array, "6"], method: str | None = None, *, throw: bool = True
 ) -> Float[Array, ""]:
     """max Re λ(∂f/∂y) at y: < 0 stable, > 0 unstable (thesis figs 2.6b, 6.4); ``method``:
     see `matrix_max_real_eigenvalue`; ``throw``: see `jaxtow.vector_field`."""

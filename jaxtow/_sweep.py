@@ -35,6 +35,7 @@ from ._stability import (
     ABSCISSA_METHODS,
     EIG_METHODS,
     classify,
+    default_eig_method,
     jacobian,
     matrix_eigenvalues,
     matrix_routh_hurwitz_stable,
@@ -67,7 +68,7 @@ def point_kernel(
     max_roots: int = 4,
     psi_range: float = math.pi / 2,
     routh_hurwitz: bool = True,
-    eig_method: str = "lapack",
+    eig_method: str | None = None,
 ) -> dict:
     """Equilibria and stability at one parameter point (pure; vmap it over points).
 
@@ -88,6 +89,7 @@ def point_kernel(
         raise ValueError(f"parameter 'method' must be 'numerical' or 'analytic', got {method!r}")
     J = jax.vmap(lambda y: jacobian(mdl, y, throw=False))(eqs.state)  # once, for both verdicts
     out = {f: getattr(eqs, f) for f in SLOT_FIELDS}
+    eig_method = default_eig_method() if eig_method is None else eig_method
     if eig_method == "routh":
         max_re = jax.vmap(spectral_abscissa)(J)
     elif eig_method in EIG_METHODS:
@@ -167,8 +169,9 @@ class SweepSolver:
     ``routh_hurwitz``: add the Routh-Hurwitz cross-check; ``eigenvalues``: add every
     eigenvalue (``eig_real``, ``eig_imag``) to max Re λ; ``eig_method``: by default "routh"
     (the pure-JAX spectral abscissa, the fastest, on any backend) when the eigenvalues are
-    not wanted; with them, "polynomial" when a chunk is sharded over several CPU devices
-    (concurrent LAPACK calls into OpenBLAS deadlocked there), else "lapack"."""
+    not wanted; with them, "lapack" on one CPU device, else "polynomial": on a GPU (no
+    batched nonsymmetric eigensolver there; `jaxtow.default_eig_method`) and when a chunk is
+    sharded over several CPU devices (concurrent LAPACK calls into OpenBLAS deadlocked)."""
 
     method: str = "numerical"
     n_grid: int = 2001
@@ -312,7 +315,7 @@ def plan_sweep(
         if not eigenvalues:
             eig_method = "routh"
         else:
-            eig_method = "polynomial" if (ndev > 1 and on_cpu) else "lapack"
+            eig_method = "lapack" if (ndev == 1 and on_cpu) else "polynomial"
     elif eigenvalues and eig_method not in EIG_METHODS:
         raise ValueError(
             f"eigenvalues=True needs parameter 'eig_method' in {EIG_METHODS}, got {eig_method!r}"

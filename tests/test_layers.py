@@ -303,3 +303,28 @@ def test_the_sweep_loop_loads_no_progress_display():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip() == "[]", r.stdout
+
+
+def _contract_layers() -> list[list[str]]:
+    import tomllib
+
+    cfg = tomllib.loads((PACKAGE.parent / "pyproject.toml").read_text(encoding="utf-8"))
+    (contract,) = cfg["tool"]["importlinter"]["contracts"]
+    return [[p.strip() for p in layer.split("|")] for layer in contract["layers"]]
+
+
+def test_numerics_covers_every_numerical_layer_of_the_contract():
+    """`NUMERICS` (what may import no file format, data or figure) holds every module that
+    the import contract places in the numerical layers or the core, and the architecture
+    page's numerics row names every numerical package of the contract."""
+    layers = _contract_layers()
+    top = next(i for i, layer in enumerate(layers) if "jaxtow.design" in layer)
+    below = [m for layer in layers[top:] for m in layer]
+    missing = [m for m in below if not m.startswith(NUMERICS) or m.startswith(NOT_NUMERICS)]
+    assert missing in ([], ["jaxtow._progress"]), missing
+    page = (PACKAGE.parent / "docs" / "architecture.md").read_text(encoding="utf-8")
+    row = next(line for line in page.splitlines() if line.startswith("| numerics |"))
+    core = next(line for line in page.splitlines() if line.startswith("| core |"))
+    for m in below:
+        short = m if not m.startswith("jaxtow._") else m.removeprefix("jaxtow.")
+        assert f"`{short}`" in row + core, f"docs/architecture.md's layer table lacks {m}"

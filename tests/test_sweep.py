@@ -89,6 +89,47 @@ def test_truncation_is_reported(barge_2b):
         jt.equilibria(model(barge_2b), max_roots=2)
 
 
+@pytest.mark.parametrize("platform", ["gpu", "cuda", "rocm", "tpu", "METAL"])
+def test_no_plan_off_the_cpu_picks_lapacks_eigensolver(barge_2b, platform):
+    """On a GPU LAPACK's nonsymmetric eigensolver runs matrix by matrix (a 16,384-point chunk
+    did not finish in 200 s on an H200): no default off the CPU picks it, whether the
+    eigenvalues are wanted or only max Re λ, on one device or several."""
+    from jaxtow._sweep import plan_sweep
+
+    assert jt.default_eig_method(platform) == "polynomial"
+    assert jt.default_eig_method("cpu") == "lapack"
+    grid = {"xp": np.linspace(0.1, 0.5, 5)}
+    for eigenvalues in (False, True):
+        for ndev in (1, 4):
+            plan = plan_sweep(
+                model(barge_2b),
+                grid,
+                jt.SweepSolver(eigenvalues=eigenvalues),
+                ndev=ndev,
+                on_cpu=False,
+            )
+            assert plan.options["eig_method"] != "lapack", (eigenvalues, ndev)
+    cpu = plan_sweep(model(barge_2b), grid, jt.SweepSolver(eigenvalues=True), ndev=1, on_cpu=True)
+    assert cpu.options["eig_method"] == "lapack"
+
+
+def test_the_backends_default_gives_the_same_eigenvalues(barge_2b):
+    """The polynomial route (the default off the CPU) and LAPACK agree on the tow's spectra."""
+    m = model(barge_2b)
+    eqs = jt.equilibria(m)
+    for y in np.asarray(eqs.state)[np.asarray(eqs.valid)]:
+        def order(lam):  # by real part to 1e-6, then imaginary: conjugate pairs line up
+            lam = np.asarray(lam)
+            return lam[np.lexsort((lam.imag, np.round(lam.real, 6)))]
+
+        a = order(jt.eigenvalues(m, y, "lapack"))
+        b = order(jt.eigenvalues(m, y, "polynomial"))
+        np.testing.assert_allclose(a, b, atol=1e-8)
+        assert np.array_equal(
+            np.asarray(jt.eigenvalues(m, y)), np.asarray(jt.eigenvalues(m, y, "lapack"))
+        )
+
+
 _SHARD_SCRIPT = textwrap.dedent("""
     import jax, numpy as np, jaxtow as jt
     assert len(jax.devices()) == 4, jax.devices()

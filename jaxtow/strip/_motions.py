@@ -131,8 +131,8 @@ def rigid_body_matrices(hull: Hull, loading: Loading | None = None, *, water: Wa
     """The mass and restoring matrices (5, 5) over `MODES` about the origin on the waterline
     at midships: mass ρ∇ at the ``loading``'s CoG (x_G default x_B) with its radii of
     gyration (default the estimate for the hull's L and B; `jaxtow.mass_matrix`), and the
-    hydrostatics of the strips (`jaxtow.hydrostatic_restoring`). ``loading`` None: the
-    documented estimate, `jaxtow.Loading.estimate` at the hull's draft."""
+    hydrostatics of the strips (`jaxtow.hydrostatic_restoring`). ``loading`` None:
+    ``Loading()``, G in the waterline plane over the centre of buoyancy."""
     loading = _loading(hull, loading)
     hs = hydrostatics(hull)
     mass = water.rho * hs.volume
@@ -146,7 +146,10 @@ def rigid_body_matrices(hull: Hull, loading: Loading | None = None, *, water: Wa
 
 def _loading(hull: Hull, loading: Loading | None) -> Loading:
     if loading is None:
-        return Loading.estimate(hull.draft)
+        # G in the waterline plane: a hull of any size stays upright (the panel side's default,
+        # `Loading.estimate`, is the thesis's KG of Barge 1 and 2 and would be absurd for a
+        # model-scale Wigley hull)
+        return Loading()
     check_type("loading", loading, Loading)
     return loading
 

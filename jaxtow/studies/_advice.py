@@ -247,12 +247,13 @@ def seabed_advice(tow, model, s: StudySummary) -> AdviceRow | None:
         present=l00,
         present_text=_in_units("l0", l00, model.reference_scales),
         searched_text=f"{lo * L:.0f} to {l00 * L:.0f} m",
-        note="a lighter line clears it too; a heavier one sags more",
     )
+    note = "a lighter line clears it too; a heavier one sags more"
     if float(sag(lo)) > need:
-        return AdviceRow(**row)
+        return AdviceRow(**row, note=note)
     root, _ = bisect(lambda x, _: need - sag(x), jnp.asarray(lo), jnp.asarray(l00), atol=1e-4 * l00)
-    l0 = float(root)
+    # whole metres, rounded down: the advice clears the seabed rather than touching it
+    l0 = math.floor(float(root) * L) / L
     changed = with_parameters(model, l0=l0)
     eqs = equilibria(changed)
     k = int(np.argmin(np.where(np.asarray(eqs.valid), np.abs(np.asarray(eqs.psi)), np.inf)))
@@ -264,7 +265,13 @@ def seabed_advice(tow, model, s: StudySummary) -> AdviceRow | None:
         value=l0,
         value_text=f"{l0 * L:.0f} m (sag {new_sag:.1f} m in {tow.water_depth:g} m of water)",
         tow_file=f"[towline] length = {l0 * L:.0f}",
-        verified=bool(new_sag <= need) and _follows(changed),
+        verified=bool(new_sag <= need),
+        note=note
+        + (
+            "; at this length the tow still follows the tug in calm water"
+            if _follows(changed)
+            else "; at this length the tow fishtails in calm water: see the yaw advice"
+        ),
     )
 
 
