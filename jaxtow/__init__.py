@@ -11,6 +11,8 @@ private (a leading underscore) and re-exported here or by its subpackage:
 * ``jaxtow.resistance`` — tow resistance, tug, operating speed;
 * ``jaxtow.continuation`` — branches, bifurcations, limit cycles;
 * ``jaxtow.design`` — towline and bridle design, sensitivities;
+* ``jaxtow.risk`` — the fishtailing risk and towline loads in an irregular sea (batched
+  time-domain Monte Carlo);
 * ``jaxtow.lines`` — the towline catalogue (wire, chain, fibre rope) and composite lines;
 * ``jaxtow.presets`` — the built-in vessels, tows, drift databases and every documented
   estimate;
@@ -50,6 +52,7 @@ if TYPE_CHECKING:
         presets as presets,
         reports as reports,
         resistance as resistance,
+        risk as risk,
         studies as studies,
         tow as tow,
         waves as waves,

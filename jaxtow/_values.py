@@ -80,6 +80,41 @@ ASSUMPTIONS = {
         note="ILLUSTRATIVE above-water height of Barge 2 with deck cargo (about 1.1 m "
         "freeboard + 9 m cargo); the thesis's 'arbitrary deck load' is not given",
     ),
+    "fishtail_yaw_amplitude": dict(
+        value=10.0,
+        units="deg",
+        note="a run fishtails when its yaw amplitude (half the peak-to-peak heading after the "
+        "start-up) exceeds 10 deg: the slow drift and gusts swing a course-stable tow by a "
+        "few degrees, Barge 2a's calm-water limit cycle by tens of degrees. No guideline "
+        "states a number; the risk result carries the one used and is shown at 5 and 20 deg "
+        "too; estimate",
+    ),
+    "risk_initial_yaw": dict(
+        value=2.0,
+        units="deg",
+        note="each Monte Carlo run starts at the static straight-behind equilibrium with a "
+        "heading drawn uniformly within +-2 deg, so that an unstable equilibrium is left "
+        "even in calm water; estimate",
+    ),
+    "risk_transient": dict(
+        value=600.0,
+        units="s",
+        note="the first 10 minutes of each run (the start-up of the forces) are left out of "
+        "its statistics; estimate",
+    ),
+    "slack_fraction": dict(
+        value=0.05,
+        units="of the static tension",
+        note="a slack (snatch) event is the towline tension falling below 5 % of its static "
+        "value; estimate",
+    ),
+    "gust_mean_wind": dict(
+        value=1.0,
+        units="h",
+        note="the gust spectrum (NPD, ISO 19901-1) is about the one-hour mean wind at 10 m: a "
+        "sea state's wind_speed is taken as that mean, with the gusts on top (conservative "
+        "when the given speed is a shorter average); estimate",
+    ),
 }
 
 #: Plausible ranges of the documented estimates, for the attribution of claims

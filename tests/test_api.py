@@ -19,6 +19,7 @@ PUBLIC = [
     "jaxtow.strip",
     "jaxtow.continuation",
     "jaxtow.design",
+    "jaxtow.risk",
     "jaxtow.distributed",
     "jaxtow.lines",
     "jaxtow.guidelines",

@@ -29,6 +29,7 @@ NUMERICS = (
     "jaxtow.forces",
     "jaxtow.continuation",
     "jaxtow.design",
+    "jaxtow.risk",
 )
 #: Modules of the numerical layers' own namespace that are not numerics: the labelled-results
 #: module joins the numerics with `jaxtow.io` and sits above it; the progress meters are the

@@ -118,6 +118,7 @@ def test_the_backends_default_gives_the_same_eigenvalues(barge_2b):
     m = model(barge_2b)
     eqs = jt.equilibria(m)
     for y in np.asarray(eqs.state)[np.asarray(eqs.valid)]:
+
         def order(lam):  # by real part to 1e-6, then imaginary: conjugate pairs line up
             lam = np.asarray(lam)
             return lam[np.lexsort((lam.imag, np.round(lam.real, 6)))]

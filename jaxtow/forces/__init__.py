@@ -19,6 +19,8 @@ if TYPE_CHECKING:
         CombinedForce as CombinedForce,
         ConstantBodyForce as ConstantBodyForce,
         NoExternalForce as NoExternalForce,
+        combine as combine,
+        force_terms as force_terms,
     )
     from ._current import CurrentForce as CurrentForce
     from ._waves import (
@@ -26,6 +28,6 @@ if TYPE_CHECKING:
         SlowDriftForce as SlowDriftForce,
         WaveDriftForce as WaveDriftForce,
     )
-    from ._wind import WindForce as WindForce
+    from ._wind import GustWindForce as GustWindForce, WindForce as WindForce
 
 __getattr__, __dir__, __all__ = _attach(__name__, __file__)

@@ -86,3 +86,18 @@ class CombinedForce(AbstractExternalForce):
                 else:
                     out.setdefault(k, v)
         return out
+
+
+def force_terms(external) -> list:
+    """The terms of a tow model's ``external`` force as a list (a `CombinedForce`'s forces,
+    a single force, or none)."""
+    if external is None:
+        return []
+    return list(external.forces) if isinstance(external, CombinedForce) else [external]
+
+
+def combine(forces) -> AbstractExternalForce | None:
+    """The one ``external`` force of a list of terms (None, the one force, or their
+    `CombinedForce`): the inverse of `force_terms`."""
+    forces = list(forces)
+    return None if not forces else forces[0] if len(forces) == 1 else CombinedForce(tuple(forces))

@@ -163,15 +163,42 @@ class IrregularWaveDriftForce(AbstractExternalForce):
         return out
 
 
+def _nodes(omega, lo: float, hi: float, k: int | None) -> dict:
+    """The ``nodes`` and ``node_weights`` fields of a `SlowDriftForce` (empty for None): k
+    equally spaced nodes over [lo, hi] and the Catmull-Rom cubic weights that carry values
+    at the nodes to ``omega`` (exact for cubics inside, one-sided at the ends)."""
+    if k is None:
+        return {}
+    if not (isinstance(k, int) and k >= 4):
+        raise ValueError(f"parameter 'nodes' must be an integer >= 4 or None, got {k!r}")
+    nodes = np.linspace(lo, hi, k)
+    x = np.clip((np.asarray(omega) - lo) / (nodes[1] - nodes[0]), 0.0, k - 1 - 1e-12)
+    j = np.floor(x).astype(int)
+    t = x - j
+    basis = (
+        (-(t**3) + 2 * t**2 - t) / 2,
+        (3 * t**3 - 5 * t**2 + 2) / 2,
+        (-3 * t**3 + 4 * t**2 + t) / 2,
+        (t**3 - t**2) / 2,
+    )
+    weights = np.zeros((x.size, k))
+    rows = np.arange(x.size)
+    for offset, b in zip((-1, 0, 1, 2), basis):
+        np.add.at(weights, (rows, np.clip(j + offset, 0, k - 1)), b)
+    return dict(nodes=jnp.asarray(nodes), node_weights=jnp.asarray(weights))
+
+
 class SlowDriftForce(AbstractExternalForce):
-    """Mean plus slowly varying drift in an irregular head sea, Newman's approximation, for
+    """Mean plus slowly varying drift in an irregular sea, Newman's approximation, for
     time-domain runs (thesis 6.3 uses the mean only).
 
     The sea is the sum of ``n`` seeded components ζ_i = a_i cos(ω_e,i t + ε_i), a_i =
     √(2 S(ω_i) Δω_i), with one random frequency in each of ``n`` equal bins (so the record
-    does not repeat) and ω_e,i = ω_i + ω_i² U_tug/g the encounter frequency on the tug's
-    track. With T_i the sailing mean drift per ζa² at ω_i (`jaxtow.drift.sailing_drift` at
-    the vessel's state and heading, ``form``/``yaw_rate`` as in `IrregularWaveDriftForce`),
+    does not repeat), coming from ``angle`` α relative to the tug's course (0: head seas), and
+    ω_e,i = ω_i + (ω_i²/g) U_tug cos α the encounter frequency on the tug's track
+    (`jaxtow.drift.encounter_frequency`). With T_i the sailing mean drift per ζa² at ω_i
+    (`jaxtow.drift.sailing_drift` at the vessel's state and heading β = α − ψ,
+    ``form``/``yaw_rate`` as in `IrregularWaveDriftForce`),
     the force is the difference-frequency double sum with Newman's off-diagonal
     T_ij = (T_i + T_j)/2:
 
@@ -207,6 +234,9 @@ class SlowDriftForce(AbstractExternalForce):
     offdiagonal: Array | None = None  # (nβ, 3, n, n) complex D_ij of the full QTF
     offdiagonal_beta: Array | None = None  # (nβ,) its headings [rad]
     full_qtf_energy: Array | None = None  # share of Σ a_i² inside the full QTF's range
+    angle: jnp.ndarray = rule_field(rule=FINITE, default=0.0)
+    nodes: Array | None = None  # (K,) frequencies where T is evaluated [rad/s]
+    node_weights: Array | None = None  # (n, K) cubic interpolation from the nodes
 
     def __check_init__(self):
         check_form(self.form)
@@ -224,9 +254,15 @@ class SlowDriftForce(AbstractExternalForce):
         form: str = "aranha",
         yaw_rate: bool = True,
         full_qtf=None,
+        angle: float = 0.0,
+        nodes: int | None = None,
     ) -> SlowDriftForce:
         """Components from ``seed``: ``n`` bins over ``omega_range`` [rad/s]; ``full_qtf``
-        (a `jaxtow.drift.FullQTF`) replaces Newman's off-diagonal terms by the full QTF's."""
+        (a `jaxtow.drift.FullQTF`) replaces Newman's off-diagonal terms by the full QTF's;
+        ``angle`` [rad] the direction the waves come from (0: ahead); ``nodes``: evaluate the
+        drift T at that many equally spaced frequencies over ``omega_range`` and interpolate
+        it to the components by cubic (Catmull-Rom) weights (a run's cost is that of the nodes, not of the
+        components; None: at every component)."""
 
         if not (isinstance(n, int) and n >= 2):
             raise ValueError(f"parameter 'n' must be an integer >= 2, got {n!r}")
@@ -266,30 +302,62 @@ class SlowDriftForce(AbstractExternalForce):
             offdiagonal=off,
             offdiagonal_beta=off_b,
             full_qtf_energy=share,
+            angle=jnp.asarray(float(angle)),
+            **_nodes(w, lo, hi, nodes),
         )
 
     def amplitudes(self):
         """a_i = √(2 S(ω_i) Δω_i) [m]."""
         return jnp.sqrt(2.0 * self.spectrum.density(self.omega) * self.domega)
 
+    def encounter(self):
+        """ω_e,i [rad/s]: the components' frequencies on the tug's track."""
+        return encounter_frequency(self.omega, self.angle, self.scales.u_tug)
+
+    def components(self, t):
+        """z_i = a_i e^{i(ω_e,i t + ε_i)} at non-dimensional time t (complex, (n,))."""
+        sc = self.scales
+        ts = t * sc.length / sc.u_tug
+        return self.amplitudes() * jnp.exp(1j * (self.encounter() * ts + self.phase))
+
     def dimensional(self, t, y):
         """(Fx [N], Fy [N], Nz [N·m]) at non-dimensional time t and state y."""
 
-        U, L = self.scales.u_tug, self.scales.length
-        u, v, r, psi = y[0] * U, y[1] * U, y[2] * U / L, y[5]
-        T = jax.vmap(
-            lambda w: sailing_drift(
-                self.qtf, w, -psi, u, v, r, form=self.form, yaw_rate=self.yaw_rate, throw=False
-            )
-        )(self.omega)  # (n, 3)
-        we = self.omega + self.omega**2 * U / G
-        z = self.amplitudes() * jnp.exp(1j * (we * t * L / U + self.phase))
-        A = jnp.sum(z[:, None] * T, axis=0)
+        z = self.components(t)
+        if self.nodes is None:
+            A = jnp.sum(z[:, None] * self.transfer(y), axis=0)
+        else:  # Σ_i z_i Σ_k W_ik T_k = Σ_k (Σ_i z_i W_ik) T_k: the drift at the nodes only
+            A = jnp.sum((z @ self.node_weights)[:, None] * self._drift(self.nodes, y), axis=0)
         F = jnp.real(A * jnp.conj(jnp.sum(z)))
         if self.offdiagonal is None:
             return F
-        D = self._offdiagonal_at(-psi)  # (3, n, n)
+        D = self._offdiagonal_at(self.angle - y[5])  # (3, n, n)
         return F + jnp.real(jnp.einsum("i,cij,j->c", z, D, jnp.conj(z)))
+
+    def _drift(self, omega, y):
+        """The sailing mean drift per ζa² (n, 3) at the frequencies ``omega`` and state y."""
+        U, L = self.scales.u_tug, self.scales.length
+        u, v, r, psi = y[0] * U, y[1] * U, y[2] * U / L, y[5]
+        return jax.vmap(
+            lambda w: sailing_drift(
+                self.qtf,
+                w,
+                self.angle - psi,
+                u,
+                v,
+                r,
+                form=self.form,
+                yaw_rate=self.yaw_rate,
+                throw=False,
+            )
+        )(omega)
+
+    def transfer(self, y):
+        """T_i (n, 3): the sailing mean drift per ζa² at each component's frequency and the
+        state y (interpolated from the ``nodes`` where it has them) [N/m², N·m/m²]."""
+        if self.nodes is None:
+            return self._drift(self.omega, y)
+        return self.node_weights @ self._drift(self.nodes, y)
 
     def _offdiagonal_at(self, beta):
         """D(β), linear between the full QTF's headings; clamped, or periodic on a circle."""
@@ -316,6 +384,7 @@ class SlowDriftForce(AbstractExternalForce):
             scales=self.scales,
             form=self.form,
             yaw_rate=self.yaw_rate,
+            angle=self.angle,
         )
 
     def validity(self, y: Float[Array, "6"]) -> dict:

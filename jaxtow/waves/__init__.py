@@ -8,6 +8,12 @@ from typing import TYPE_CHECKING
 from .._lazy import attach as _attach
 
 if TYPE_CHECKING:
+    from ._gusts import (
+        GUST_BAND as GUST_BAND,
+        NPD_EXPONENT as NPD_EXPONENT,
+        NPDWind as NPDWind,
+        npd_wind_spectrum as npd_wind_spectrum,
+    )
     from ._irregular import (
         DEFAULT_OMEGA as DEFAULT_OMEGA,
         mean_drift as mean_drift,
