@@ -116,8 +116,29 @@ def test_common_random_numbers_make_a_difference_exact():
     the two variants agree run by run."""
     tow = jt.tow.load("barge2a")
     d = risk.compare(tow, CALM, {"l0": 2.5}, n_runs=4, duration=1800.0, settings=FAST)
-    assert d.difference == 0.0 and d.interval == (0.0, 0.0)
+    assert d.difference == 0.0 and d.interval == (0.0, 0.0) and d.p_value == 1.0
     np.testing.assert_array_equal(d.base.yaw_amplitude, d.changed.yaw_amplitude)
+
+
+def test_mcnemar_exact_test_by_hand():
+    """Five discordant pairs all one way: p = 2·(1/2)^5 = 0.0625, not significant; six: 0.03125."""
+    import dataclasses
+
+    def result(fish):
+        n = len(fish)
+        z = np.zeros(n)
+        return risk.RiskResult(
+            settings=risk.RiskSettings(n_runs=n), described={}, fishtails=np.array(fish, bool),
+            yaw_amplitude=z, max_yaw=z, sway_amplitude=z, yaw_std=z, sway_std=z, max_tension=z,
+            min_tension=z, slack_events=z.astype(int), completed=np.ones(n, bool),
+            static_tension=1.0, validity={},
+        )  # fmt: skip
+
+    for k, p in ((5, 0.0625), (6, 0.03125)):
+        d = risk.difference(result([1] * k + [0] * 4), result([0] * (k + 4)))
+        assert d.p_value == pytest.approx(p) and d.difference == pytest.approx(-k / (k + 4))
+        assert d.significant == (p < 0.05) and d.interval[0] >= -1.0
+    assert dataclasses.is_dataclass(d)
 
 
 @pytest.mark.parametrize(

@@ -3,6 +3,7 @@ self-contained HTML report."""
 
 from __future__ import annotations
 
+import dataclasses
 import re
 import sys
 from pathlib import Path
@@ -54,8 +55,18 @@ def _stem(args) -> str:
     return safe_name(_tow(args).name)
 
 
+def _with_risk_options(tow, args):
+    """The tow with the command line's --risk and --risk-budget in its [study] options."""
+    given = {
+        k: v for k, v in (("risk", args.risk), ("risk_budget_s", args.risk_budget)) if v is not None
+    }
+    if not given:
+        return tow
+    return dataclasses.replace(tow, study=dataclasses.replace(tow.study, **given))
+
+
 def cmd_study(args):
-    tow = _tow(args)
+    tow = _with_risk_options(_tow(args), args)
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise SystemExit(f"jaxtow study: error: --out {out} exists and is not a folder")
@@ -69,7 +80,7 @@ def cmd_study(args):
     if args.no_time_domain:
         kw["time_domain"] = False
     stem = safe_name(tow.name)
-    options = dict(kw, n_save=2001)
+    options = dict(kw, n_save=2001, risk=[tow.study.risk, tow.study.risk_budget_s])
     store = jt.io.StepStore(
         out / f".{stem}_steps",
         jt.io.fingerprint(dict(tow=tow.resolved, options=options, version=jt.__version__)),
@@ -191,6 +202,20 @@ def add_parser(sub):
     )
     p.add_argument("--t1", type=positive_float, default=None, help="override [study] t1")
     p.add_argument("--no-time-domain", action="store_true", help="skip the time-domain check")
+    p.add_argument(
+        "--risk",
+        choices=("auto", "always", "never"),
+        default=None,
+        help="the irregular-sea Monte Carlo: auto (where a yaw criterion is not determined; "
+        "the default of [study] risk), always, never",
+    )
+    p.add_argument(
+        "--risk-budget",
+        type=positive_float,
+        default=None,
+        metavar="S",
+        help="its wall-time budget in seconds (default [study] risk_budget_s, 300)",
+    )
     p.add_argument("--quiet", action="store_true", help="no progress output")
     p.add_argument(
         "--resume",

@@ -15,6 +15,7 @@ if TYPE_CHECKING:
         design as design,
         drift as drift,
         resistance as resistance,
+        risk as risk,
         timedomain as timedomain,
         tow as tow,
         waves as waves,

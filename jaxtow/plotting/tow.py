@@ -12,6 +12,7 @@ import numpy as np
 from .._units import RHO_SEA, G
 from .calm import plot_stability_map
 from .resistance import plot_operating_point
+from .risk import plot_risk_against_hs, plot_risk_runs, plot_risk_tension
 from .timedomain import plot_time_traces
 
 
@@ -33,6 +34,18 @@ def study_figure_makers(study) -> dict:
         makers["map"] = lambda: _map_figure(s, study.datasets["map_xp_l0"])
     if "calm" in study.runs and s.time_domain is not None:
         makers["time_domain"] = lambda: _time_domain_figure(s, *study.runs["calm"])
+    for rec in s.risk:
+        if rec.sea_state not in study.risk:
+            continue
+        result, _ = study.risk[rec.sea_state]
+        name = rec.sea_state
+        makers[f"risk_runs_{name}"] = lambda r=result, n=name: plot_risk_runs(
+            r, f"{s.tow}: sea state {n}"
+        )
+        makers[f"risk_tension_{name}"] = lambda r=result, n=name: plot_risk_tension(
+            r, f"{s.tow}: sea state {n}"
+        )
+        makers[f"risk_hs_{name}"] = lambda rec=rec: plot_risk_against_hs(rec, s.tow)
     return makers
 
 

@@ -28,6 +28,7 @@ REPORT_SECTIONS = (
     "stability",
     "map",
     "time-domain",
+    "risk",
     "drift",
     "validity",
     "assumptions",
@@ -309,6 +310,74 @@ def _time_domain(s: StudySummary) -> dict | None:
     )
 
 
+def _percent(p) -> str:
+    return f"{100 * p.value:.0f} % ({100 * p.low:.0f}-{100 * p.high:.0f} %)"
+
+
+def _risk(s: StudySummary) -> list:
+    """One block per sea state of the irregular-sea Monte Carlo: its rows in words."""
+    out = []
+    for r in s.risk:
+        rows = [
+            [
+                "runs",
+                f"{r.runs} runs of {r.duration_h:g} h at the design speed, from the static "
+                f"equilibrium (the first {r.settings.get('transient_s', 0) / 60:.0f} min of "
+                f"each left out)"
+                + (f"; {r.failed_runs} did not reach the end" if r.failed_runs else "")
+                + (
+                    f"; stopped by the time budget: {r.stopped_by_budget}"
+                    if r.stopped_by_budget
+                    else ""
+                ),
+            ],
+            [
+                "fishtails in a run",
+                f"{_percent(r.fishtail)}: yaw amplitude over {r.yaw_threshold_deg:g} deg "
+                f"(over 5 deg: {_percent(r.fishtail_5deg)}; over 20 deg: {_percent(r.fishtail_20deg)})",
+            ],
+        ]
+        if r.fishtail_exposure is not None and r.exposure_h is not None:
+            rows.append(
+                [
+                    f"over the route ({r.exposure_h:.0f} h in this sea state)",
+                    _percent(r.fishtail_exposure),
+                ]
+            )
+        rows.append(
+            [
+                "towline tension",
+                f"static {r.static_tension / 1e3:.0f} kN; most probable maximum in 3 h "
+                f"{r.mpm_tension / 1e3:.0f} kN; largest of all runs {r.largest_tension / 1e3:.0f} kN",
+            ]
+        )
+        if r.mbl is not None and r.exceed_mbl is not None:
+            text = f"MBL {r.mbl / 1e3:.0f} kN exceeded in {_percent(r.exceed_mbl)} of the runs"
+            if r.design_load is not None and r.exceed_design_load is not None:
+                text += (
+                    f"; the guideline's design load MBL/f(BP) {r.design_load / 1e3:.0f} kN in "
+                    f"{_percent(r.exceed_design_load)}"
+                )
+            rows.append(["against the MBL", text])
+        else:
+            rows.append(["against the MBL", "not checked: no catalogue line named"])
+        rows.append(["slack line (snatch)", f"{_percent(r.slack)} of the runs"])
+        for d in r.design:
+            rows.append(
+                [
+                    f"with {d.text}",
+                    f"{100 * d.changed:.0f} % against {100 * d.base:.0f} % over the same "
+                    f"{d.runs} runs (change {100 * d.difference.value:+.0f} %, "
+                    f"{100 * d.difference.low:+.0f} to {100 * d.difference.high:+.0f} %; McNemar "
+                    f"p = {d.p_value:.2g}{', significant' if d.p_value < 0.05 else ', not significant'})",
+                ]
+            )
+        if r.outside_validity:
+            rows.append(["validity at the static equilibrium", "; ".join(r.outside_validity)])
+        out.append(dict(name=r.sea_state, hs=r.hs, tp=r.tp, rows=rows, seconds=f"{r.seconds:.0f}"))
+    return out
+
+
 def _mean_drift(s: StudySummary) -> dict | None:
     if s.drift is None or not s.drift.mean_drift:
         return None
@@ -372,6 +441,7 @@ def tow_report_html(summary: StudySummary, figures: dict, *, version: str = "") 
         conditions=_stability(s),
         map=_map(s),
         time_domain=_time_domain(s),
+        risk=_risk(s),
         wall_ratio=None if s.drift is None else f"{s.drift.wall_limit_ratio:.3f}",
         mean_drift=_mean_drift(s),
         validity=_validity(s),

@@ -15,7 +15,11 @@ from typing import TYPE_CHECKING
 from .._lazy import attach as _attach
 
 if TYPE_CHECKING:
-    from ._compare import RiskDifference as RiskDifference, compare as compare
+    from ._compare import (
+        RiskDifference as RiskDifference,
+        compare as compare,
+        difference as difference,
+    )
     from ._linear import LinearResponse as LinearResponse, linear_response as linear_response
     from ._montecarlo import (
         RiskResult as RiskResult,

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import time
 from typing import Protocol, runtime_checkable
 
 import diffrax
@@ -109,7 +110,7 @@ class RiskSettings:
 
     def __post_init__(self):
         checks = (
-            ("n_runs", self.n_runs, isinstance(self.n_runs, int) and self.n_runs >= 2),
+            ("n_runs", self.n_runs, isinstance(self.n_runs, int) and self.n_runs >= 1),
             ("duration", self.duration, self.duration > self.transient >= 0),
             ("transient", self.transient, self.transient >= 0),
             ("n_components", self.n_components, int(self.n_components) >= 2),
@@ -443,6 +444,7 @@ def irregular_sea(
     full_qtf=None,
     keep: int = 8,
     parameters: dict | None = None,
+    budget_s: float | None = None,
     progress_meter: AbstractProgressMeter | None = None,
     checkpoint=None,
 ) -> RiskResult:
@@ -456,7 +458,11 @@ def irregular_sea(
     replaced by the arguments). ``full_qtf``: a `jaxtow.drift.FullQTF` for the off-diagonal
     drift. ``keep``: runs whose heading and sway series are kept for figures.
     ``parameters``: changes to the tow model (`jaxtow.with_parameters` names → values, e.g.
-    {"l0": 2.0, "xp": 0.4}) for every run. ``progress_meter``, ``checkpoint``: as `jaxtow.sweep_arrays`. Deterministic for a seed."""
+    {"l0": 2.0, "xp": 0.4}) for every run. ``budget_s``: a wall-time budget [s]: the runs
+    stop after the chunk that reaches it (at least one chunk runs; the result holds the
+    runs that finished, a prefix of the full batch). ``progress_meter``, ``checkpoint``: as `jaxtow.sweep_arrays`. Deterministic for a seed."""
+    if not int(n_runs) >= 2:
+        raise ParameterError("n_runs", f"parameter 'n_runs' must be at least 2, got {n_runs!r}")
     s = dataclasses.replace(
         settings or RiskSettings(), n_runs=int(n_runs), duration=float(duration), seed=int(seed)
     )
@@ -471,9 +477,22 @@ def irregular_sea(
     y_eq, at_eq = _start(mean)
     draws = _draws(s, model, mean, y_eq)
     static_T = float(mean.towline.tension(y_eq[3])) * float(scales.force)
+    deadline = None if budget_s is None else time.perf_counter() + float(budget_s)
     arrays, samples = _run(
-        without_metadata(model), draws, s, scales, static_T, keep, progress_meter, checkpoint
+        without_metadata(model),
+        draws,
+        s,
+        scales,
+        static_T,
+        keep,
+        progress_meter,
+        checkpoint,
+        deadline,
     )
+    done = int(arrays["completed"].size)
+    if done < s.n_runs:
+        described["stopped_by_budget"] = f"{done} of {s.n_runs} runs within {budget_s:g} s"
+        s = dataclasses.replace(s, n_runs=done)
     fish = arrays["yaw_amplitude"] > s.yaw_threshold
     if s.sway_threshold is not None:
         fish = fish | (arrays["sway_amplitude"] > s.sway_threshold)
@@ -506,16 +525,21 @@ def irregular_sea(
 
 
 def _draws(s: RiskSettings, model: TowModel, mean: TowModel, y_eq) -> dict:
-    """Every run's random numbers, from the seed alone (not the chunking): the start states,
-    the wave and gust phases and the uncertain parameters."""
-    rng = np.random.default_rng([s.seed, 7])
+    """Every run's random numbers, from the seed alone: the start states, the wave and gust
+    phases and the uncertain parameters, each from its own stream, so that the first k runs
+    are the same whatever ``n_runs`` (a shorter batch is a prefix of a longer one: common
+    random numbers between variants, and budgets that stop early)."""
+
+    def stream(k: int):
+        return np.random.default_rng([s.seed, 7, k])
+
     nw, ng = _n_phases(model, SlowDriftForce), _n_phases(model, GustWindForce)
-    wave_phase = rng.uniform(0.0, 2 * np.pi, (s.n_runs, nw))
-    gust_phase = rng.uniform(0.0, 2 * np.pi, (s.n_runs, ng))
-    dpsi = np.radians(rng.uniform(-s.initial_yaw, s.initial_yaw, s.n_runs))
+    wave_phase = stream(1).uniform(0.0, 2 * np.pi, (s.n_runs, nw))
+    gust_phase = stream(2).uniform(0.0, 2 * np.pi, (s.n_runs, ng))
+    dpsi = np.radians(stream(3).uniform(-s.initial_yaw, s.initial_yaw, s.n_runs))
     params = {}
-    for name, lo, hi in s.uncertain:
-        v = rng.uniform(float(lo), float(hi), s.n_runs)
+    for i, (name, lo, hi) in enumerate(s.uncertain):
+        v = stream(10 + i).uniform(float(lo), float(hi), s.n_runs)
         check_values(mean, name, v)
         params[name] = v
     y0s = np.repeat(np.asarray(y_eq)[None], s.n_runs, axis=0)
@@ -523,7 +547,8 @@ def _draws(s: RiskSettings, model: TowModel, mean: TowModel, y_eq) -> dict:
     return dict(y0s=y0s, wave_phase=wave_phase, gust_phase=gust_phase, params=params)
 
 
-def _run(model, draws, s: RiskSettings, scales, static_T, keep, progress_meter, checkpoint):
+def _run(model, draws, s: RiskSettings, scales, static_T, keep, progress_meter, checkpoint,
+         deadline=None):  # fmt: skip
     """The runs, chunk by chunk (each chunk padded to one shape: one program), through the
     checkpoint's store where there is one. Returns (per-run arrays, kept samples)."""
     U, L = float(scales.u_tug), float(scales.length)
@@ -564,6 +589,8 @@ def _run(model, draws, s: RiskSettings, scales, static_T, keep, progress_meter, 
                 store.put(c, piece)
         pieces.append(piece)
         bar.update()
+        if deadline is not None and time.perf_counter() > deadline:
+            break
     bar.close()
     keys = [k for k in pieces[0] if k not in ("psi", "sway")]
     arrays = {k: np.concatenate([p[k] for p in pieces]) for k in keys}

@@ -102,7 +102,11 @@ if TYPE_CHECKING:
         Condition as Condition,
         EquilibriumRow as EquilibriumRow,
         OperatingRow as OperatingRow,
+        Probability as Probability,
         ResistanceRow as ResistanceRow,
+        RiskDesignRow as RiskDesignRow,
+        RiskHsPoint as RiskHsPoint,
+        RiskRecord as RiskRecord,
         StudySummary as StudySummary,
         to_json as to_json,
     )
@@ -117,6 +121,12 @@ if TYPE_CHECKING:
         evaluate_resistance as evaluate_resistance,
         resistance_study as resistance_study,
         resistance_table as resistance_table,
+    )
+    from ._risk import (
+        RISK_SETTINGS as RISK_SETTINGS,
+        risk_advice as risk_advice,
+        risk_seas as risk_seas,
+        risk_step as risk_step,
     )
     from ._waves import (
         CLAIM_IDS as CLAIM_IDS,

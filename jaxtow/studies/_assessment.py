@@ -48,6 +48,7 @@ from ._records import (
     TugRecord,
 )
 from ._resistance import evaluate_resistance
+from ._risk import risk_advice, risk_seas, risk_step, with_risk
 
 __all__ = ["Steps", "TowStudy", "tow_study", "map_grids", "OperatingCurve"]
 
@@ -111,8 +112,9 @@ class TowStudy:
     """What `tow_study` computed: the typed ``summary`` (`StudySummary`: what the report, the
     console and the JSON say), and what the figures draw: ``datasets`` (name → xarray
     Dataset: the stability map), ``runs`` (name → (`jaxtow.Trajectory`,
-    `jaxtow.FishtailMetrics`)), ``budgets`` (sea state → `OperatingCurve`) and the head-sea
-    ``drift_curve`` (ω [rad/s], F_x per ζa² [N/m²])."""
+    `jaxtow.FishtailMetrics`)), ``budgets`` (sea state → `OperatingCurve`), the head-sea
+    ``drift_curve`` (ω [rad/s], F_x per ζa² [N/m²]) and the irregular-sea ``risk`` (sea
+    state → (`jaxtow.risk.RiskResult`, the results at lower Hs))."""
 
     tow: object
     summary: StudySummary
@@ -120,6 +122,7 @@ class TowStudy:
     runs: dict[str, tuple[Trajectory, FishtailMetrics]] = dataclasses.field(default_factory=dict)
     budgets: dict[str, OperatingCurve] = dataclasses.field(default_factory=dict)
     drift_curve: tuple[np.ndarray, np.ndarray] | None = None
+    risk: dict = dataclasses.field(default_factory=dict)
 
 
 def _catenary_record(model, water_depth) -> CatenaryRecord:
@@ -235,10 +238,11 @@ def tow_study(
     has_model = tow.has_model
     seas = list(tow.sea_states) if opts.sea_states else []
     has_tug = tow.tug is not None
-    n_steps = 2 + has_model * (2 + has_tug + len(seas) + bool(do_td) + 1)
+    do_risk = has_model and opts.risk != "never"
+    n_steps = 2 + has_model * (2 + has_tug + len(seas) + bool(do_td) + 1) + do_risk
     steps = Steps(n_steps, enabled=progress, store=store)
     parts: dict = dict(_particulars(tow), skipped={})
-    extra: dict = dict(datasets={}, runs={}, budgets={}, drift_curve=None)
+    extra: dict = dict(datasets={}, runs={}, budgets={}, drift_curve=None, risk={})
     try:
         _drift_step(tow, steps, parts, extra)
         if not has_model:
@@ -258,11 +262,13 @@ def tow_study(
         parts["assessment"] = steps.run(
             "criteria", "guideline criteria and the decision", assessment, tow, summary
         )
+        if do_risk:
+            _risk(tow, steps, parts, extra)
         if has_model:
             summary = StudySummary(**parts)
             parts["advice"] = steps.run(
                 "advice", "advice: a way forward for what fails", advice, tow, summary
-            )
+            ) + risk_advice(parts.get("risk", []))
     except Exception as e:  # noqa: BLE001 - the study keeps what finished and names the failure
         parts["incomplete"] = Incomplete(
             step=steps.current, error=f"{type(e).__name__}: {e}", interrupted=False
@@ -273,6 +279,20 @@ def tow_study(
         )
     parts["step_times_s"] = dict(steps.times)
     return TowStudy(tow=tow, summary=StudySummary(**parts), **extra)
+
+
+def _risk(tow, steps: Steps, parts: dict, extra: dict) -> None:
+    """The irregular-sea Monte Carlo where the linear verdict cannot decide (`_risk`)."""
+    seas = risk_seas(tow, StudySummary(**parts))
+    label = "irregular-sea risk (Monte Carlo)" + (
+        f" of sea state {', '.join(repr(s.name) for s in seas)}" if seas else ": not needed"
+    )
+    records, figures = steps.run("risk", label, risk_step, tow, StudySummary(**parts))
+    extra["risk"].update(figures)
+    parts["risk"] = records
+    if records and parts.get("assessment") is not None:
+        a = parts["assessment"]
+        parts["assessment"] = msgspec.structs.replace(a, checks=with_risk(a.checks, records))
 
 
 def _particulars(tow) -> dict:

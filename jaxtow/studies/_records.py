@@ -34,6 +34,10 @@ __all__ = [
     "AdviceRow",
     "FindingRow",
     "Incomplete",
+    "Probability",
+    "RiskHsPoint",
+    "RiskDesignRow",
+    "RiskRecord",
     "StudySummary",
     "to_json",
     "VERDICTS",
@@ -371,6 +375,82 @@ class AdviceRow(Record, frozen=True, kw_only=True):
     note: str = ""
 
 
+class Probability(Record, frozen=True, kw_only=True):
+    """A probability from a batch of runs and its 95 % Wilson interval (``low``, ``high``)."""
+
+    value: float
+    low: float
+    high: float
+
+
+class RiskHsPoint(Record, frozen=True, kw_only=True):
+    """The fishtail probability at another significant wave height ``hs`` [m] (the sea
+    state's Tp, γ, wind and current), from ``runs`` runs."""
+
+    hs: float
+    runs: int
+    fishtail: Probability
+
+
+class RiskDesignRow(Record, frozen=True, kw_only=True):
+    """One design change tried on the same random numbers as the base runs: ``parameter``
+    from ``present`` to ``value`` (by L), its text in metres, the probabilities of the base
+    and the changed tow over the ``runs`` they share, the ``difference`` (changed − base)
+    with its paired 95 % interval, and McNemar's exact ``p_value`` (below 0.05: the change
+    is real)."""
+
+    parameter: str
+    present: float
+    value: float
+    text: str
+    runs: int
+    base: float
+    changed: float
+    difference: Probability
+    p_value: float
+
+
+class RiskRecord(Record, frozen=True, kw_only=True):
+    """The irregular-sea Monte Carlo of one sea state (`jaxtow.risk.irregular_sea`) at the
+    design speed: ``runs`` of ``duration_h`` hours (``failed_runs`` that did not reach the
+    end; ``stopped_by_budget`` where the time budget ended the batch), the ``fishtail``
+    probability in a run (yaw amplitude above ``yaw_threshold_deg``) and at 5° and 20°, the
+    probability over the route's ``exposure_h`` where it has one, the towline's static
+    tension, the most probable maximum tension in 3 h (``mpm_tension``) and the largest of
+    all runs [N], the probabilities of exceeding the MBL and the guideline's design load
+    MBL/f(BP) [N], of a slack event, the validity of the drift at the static equilibrium in
+    words, the probability against Hs, the design changes tried, the settings used and the
+    wall time."""
+
+    sea_state: str
+    hs: float
+    tp: float
+    runs: int
+    failed_runs: int
+    duration_h: float
+    record_h: float
+    stopped_by_budget: str = ""
+    yaw_threshold_deg: float
+    fishtail: Probability
+    fishtail_5deg: Probability
+    fishtail_20deg: Probability
+    exposure_h: float | None = None
+    fishtail_exposure: Probability | None = None
+    static_tension: float
+    mpm_tension: float
+    largest_tension: float
+    mbl: float | None = None
+    exceed_mbl: Probability | None = None
+    design_load: float | None = None
+    exceed_design_load: Probability | None = None
+    slack: Probability
+    outside_validity: list[str] = []
+    hs_curve: list[RiskHsPoint] = []
+    design: list[RiskDesignRow] = []
+    settings: dict[str, object] = {}
+    seconds: float = 0.0
+
+
 class Incomplete(Record, frozen=True, kw_only=True):
     """Where a study stopped: the ``step`` running, what went wrong (``error``), and whether
     it was a Ctrl-C."""
@@ -415,7 +495,7 @@ class StudySummary(Record, frozen=True, kw_only=True):
     time_domain: TimeDomainRecord | None = None
     assessment: Assessment | None = None
     advice: list[AdviceRow] = []
-    risk: list[msgspec.Raw] = []
+    risk: list[RiskRecord] = []
     incomplete: Incomplete | None = None
     step_times_s: dict[str, float] = {}
     figure_errors: dict[str, str] = {}

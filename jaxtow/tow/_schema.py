@@ -35,6 +35,8 @@ __all__ = [
 ]
 
 
+#: When a study runs the irregular-sea Monte Carlo ([study] risk).
+RISK_MODES = ("auto", "always", "never")
 #: The enums of the schema (a str key's choices), read from the library's own lists.
 PRESETS = tuple(VESSELS)
 FORMS = tuple(f for f in SAILING_FORMS if f != "stationary")  # the zero-speed bound only
@@ -317,6 +319,23 @@ SCHEMA: dict[str, dict[str, Key]] = {
         speeds=Key(
             "grid", "tow speeds of the resistance table [lo, hi, n]", "m/s", default=[0.0, 3.5, 15]
         ),
+        risk=Key(
+            "str",
+            "the irregular-sea Monte Carlo (jaxtow.risk): auto (for each sea state whose yaw "
+            "criterion is not determined) | always (every sea state) | never",
+            default="auto",
+            choices=RISK_MODES,
+        ),
+        risk_budget_s=Key(
+            "float",
+            "wall-time budget of the Monte Carlo, all sea states and its design comparisons "
+            "together (runs stop after the chunk that reaches it)",
+            "s",
+            "positive",
+            300.0,
+        ),
+        risk_runs=Key("int", "most runs per sea state", "-", "positive", 256),
+        risk_hours=Key("float", "duration of each run (the exposure)", "h", "positive", 3.0),
     ),
 }
 

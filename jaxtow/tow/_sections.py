@@ -21,8 +21,10 @@ class StudyOptions:
     """What `jaxtow study` runs ([study]): the stability map's grids ``map_xp``, ``map_l0``
     ([lo, hi, n], by L; None: centred on the design point), the time-domain check
     (``time_domain``, its length ``t1`` by L/U and its start ``psi0_deg``, ``y0``), the
-    stability in each sea state (``sea_states``) and the resistance table's ``speeds``
-    [lo, hi, n] m/s."""
+    stability in each sea state (``sea_states``), the resistance table's ``speeds``
+    [lo, hi, n] m/s, and the irregular-sea Monte Carlo (``risk``: auto | always | never,
+    its wall-time budget ``risk_budget_s``, at most ``risk_runs`` runs of ``risk_hours``
+    per sea state)."""
 
     map_xp: tuple | None = None
     map_l0: tuple | None = None
@@ -32,6 +34,10 @@ class StudyOptions:
     y0: float = 0.3
     sea_states: bool = True
     speeds: tuple = (0.0, 3.5, 15)
+    risk: str = "auto"
+    risk_budget_s: float = 300.0
+    risk_runs: int = 256
+    risk_hours: float = 3.0
 
     @classmethod
     def from_section(cls, s: dict) -> StudyOptions:
