@@ -493,16 +493,20 @@ def irregular_sea(
     if done < s.n_runs:
         described["stopped_by_budget"] = f"{done} of {s.n_runs} runs within {budget_s:g} s"
         s = dataclasses.replace(s, n_runs=done)
-    fish = arrays["yaw_amplitude"] > s.yaw_threshold
-    if s.sway_threshold is not None:
-        fish = fish | (arrays["sway_amplitude"] > s.sway_threshold)
-    flags = {k: np.asarray(v).tolist() for k, v in validity(mean, jnp.asarray(y_eq)).items()}
     described.update(
         omega_range=None if band is None else list(band),
         start="static straight-behind equilibrium" if at_eq else "thesis start state",
         speed=float(scales.u_tug),
         full_qtf=full_qtf is not None,
     )
+    flags = {k: np.asarray(v).tolist() for k, v in validity(mean, jnp.asarray(y_eq)).items()}
+    return _result(s, described, arrays, samples, static_T, flags, mbl, design)
+
+
+def _result(s, described, arrays, samples, static_T, flags, mbl, design) -> RiskResult:
+    fish = arrays["yaw_amplitude"] > s.yaw_threshold
+    if s.sway_threshold is not None:
+        fish = fish | (arrays["sway_amplitude"] > s.sway_threshold)
     return RiskResult(
         settings=s,
         described=described,
