@@ -127,6 +127,7 @@ def test_one_tug_efficiency_for_the_sea_states_and_the_weather_criterion():
     assert float(own.tug_in(own.sea_states[0]).efficiency) == 0.75
 
 
+@pytest.mark.slow
 def test_tug_efficiency_reaches_the_weather_criterion():
     """The weather criterion divides the towing force by [tug] efficiency: 0.5 asks 1.5 times
     the bollard pull 0.75 asks (the report's row, by its own number)."""
@@ -367,6 +368,7 @@ def test_the_json_contract():
 # ------------------------------------------------------------------ forces that agree
 
 
+@pytest.mark.slow
 def test_the_towline_tension_is_the_tugs_pull_at_the_operating_speed():
     """Barge 2a in the survival sea: the resistance budget's operating speed and the
     stability model at that speed evaluate one drift source (and the same wind): the tug's
@@ -573,6 +575,7 @@ def test_advice_rerun_at_the_suggested_change_passes():
         assert jt.design.stable_value(model, a.parameter, *sorted((a.present, back))) is None
 
 
+@pytest.mark.slow
 def test_outside_validity_the_verdict_is_repeated_under_the_bounds():
     """Barge 2a at 2 m/s in Hs 5 m is faster than the waves' orbital velocity: the sea state
     verdict is repeated with the zero-speed drift and the thesis's form, and says whether

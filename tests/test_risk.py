@@ -90,6 +90,7 @@ def test_a_tiny_sea_settles_like_calm_water():
     assert np.max(calm.yaw_amplitude) < 0.5  # the start's ±2° dying away
 
 
+@pytest.mark.slow
 def test_a_seed_gives_the_same_runs_whatever_the_chunking(tmp_path):
     """Deterministic for a seed: chunks of 2 or 4, and a run resumed from its checkpoint, give
     the same numbers; another seed gives other numbers."""

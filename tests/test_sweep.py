@@ -41,6 +41,7 @@ def test_sweep_dataset_is_labelled(barge_2a, tmp_path):
     assert back.attrs == ds.attrs
 
 
+@pytest.mark.slow
 def test_chunked_equals_single_chunk(barge_2b):
     grid = {"xp": np.linspace(0.0, 0.6, 9), "l0": np.linspace(0.2, 2.5, 5)}
     a = jt.sweep_arrays(model(barge_2b), grid, execution=jt.SweepExecution(chunk_size=7))

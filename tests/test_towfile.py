@@ -325,6 +325,7 @@ def check_report(path: Path, figures):
     return text
 
 
+@pytest.mark.slow
 def test_study_on_barge1_reports_drift_and_says_what_it_skips(tmp_path, capsys):
     main(["study", "barge1", "--out", str(tmp_path), "--quiet"])
     s = json.loads((tmp_path / "barge1_summary.json").read_text())

@@ -28,6 +28,7 @@ from .solve import (
     FORCE_COMPONENTS,
     MIN_PANELS_PER_WAVELENGTH,
     NEAR_FIELD_PARTS,
+    FrequencySolution,
     prepare,
     solve_frequency,
 )
@@ -72,16 +73,16 @@ def _cache_key(mesh, body, omega, beta, rho, g, depth, theta_step, fixed):
     return h.hexdigest(20)
 
 
-def _frequency_dataset(r: dict):
+def _frequency_dataset(r: FrequencySolution):
     w = [r.omega]
     dims_b = ("omega", "beta")
     rao, exc = r.rao[None], r.excitation[None]
     ds = xr.Dataset(
         {
-            "rao_real": (dims_b + ("dof",), rao.real),
-            "rao_imag": (dims_b + ("dof",), rao.imag),
-            "excitation_real": (dims_b + ("dof",), exc.real),
-            "excitation_imag": (dims_b + ("dof",), exc.imag),
+            "rao_real": (dims_b + ("dof",), np.real(rao)),
+            "rao_imag": (dims_b + ("dof",), np.imag(rao)),
+            "excitation_real": (dims_b + ("dof",), np.real(exc)),
+            "excitation_imag": (dims_b + ("dof",), np.imag(exc)),
             "added_mass": (("omega", "dof", "dof_j"), r.added_mass[None]),
             "radiation_damping": (("omega", "dof", "dof_j"), r.damping[None]),
             "viscous_damping": (("omega", "dof", "dof_j"), r.viscous_damping[None]),

@@ -172,7 +172,7 @@ def solve_frequency(
     solver=None,
     symmetry: bool = True,
     prepared: _Prepared | None = None,
-) -> dict:
+) -> FrequencySolution:
     """Everything at one frequency (see the module docstring); plain NumPy arrays.
     ``fixed=True`` holds the body still (RAOs zero: diffraction only). ``symmetry`` lets the
     solver use the hull's reflection planes (`symmetric_capytaine_mesh`; the same results).

@@ -327,6 +327,7 @@ class SlowDriftForce(AbstractExternalForce):
         if self.nodes is None:
             A = jnp.sum(z[:, None] * self.transfer(y), axis=0)
         else:  # Σ_i z_i Σ_k W_ik T_k = Σ_k (Σ_i z_i W_ik) T_k: the drift at the nodes only
+            assert self.node_weights is not None  # set with the nodes
             A = jnp.sum((z @ self.node_weights)[:, None] * self._drift(self.nodes, y), axis=0)
         F = jnp.real(A * jnp.conj(jnp.sum(z)))
         if self.offdiagonal is None:
@@ -357,6 +358,7 @@ class SlowDriftForce(AbstractExternalForce):
         state y (interpolated from the ``nodes`` where it has them) [N/m², N·m/m²]."""
         if self.nodes is None:
             return self._drift(self.omega, y)
+        assert self.node_weights is not None  # set with the nodes
         return self.node_weights @ self._drift(self.nodes, y)
 
     def _offdiagonal_at(self, beta):

@@ -322,7 +322,7 @@ def _risk(s: StudySummary) -> list:
             [
                 "runs",
                 f"{r.runs} runs of {r.duration_h:g} h at the design speed, from the static "
-                f"equilibrium (the first {r.settings.get('transient_s', 0) / 60:.0f} min of "
+                f"equilibrium (the first {float(r.settings.get('transient_s', 0)) / 60:.0f} min of "
                 f"each left out)"
                 + (f"; {r.failed_runs} did not reach the end" if r.failed_runs else "")
                 + (

@@ -21,7 +21,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
-from .._rules import POSITIVE, Checked, Rule, is_concrete, rule_field
+from .._rules import POSITIVE, Checked, ParameterError, Rule, is_concrete, rule_field
 
 #: The zero-speed radiation modes of a hull: sway, heave, roll, pitch, yaw (ship modes 2-6).
 MODES = ("sway", "heave", "roll", "pitch", "yaw")
@@ -81,7 +81,9 @@ class Hull(Checked):
             ok = np.asarray(_order(np, np.asarray(self.y), np.asarray(self.z)))
             if not ok.all():
                 i = int(np.flatnonzero(~ok)[0])
-                raise ValueError(_ORDER_MESSAGE + f" (station {i} at x = {float(self.x[i]):g} m)")
+                raise ParameterError(
+                    "y, z", _ORDER_MESSAGE + f" (station {i} at x = {float(self.x[i]):g} m)"
+                )
 
     def checks(self) -> list:
         return super().checks() + [(~jnp.all(_order(jnp, self.y, self.z)), _ORDER_MESSAGE)]

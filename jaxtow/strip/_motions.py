@@ -319,8 +319,8 @@ def motions(
     [rad/s] and headings ``beta`` [rad] (waves from; 0 head seas), speed ``u`` [m/s] ≥ 0.
 
     ``loading``: the `jaxtow.Loading` (the CoG above the waterline, its x, the radii of
-    gyration and the roll damping; None: the documented estimate, `jaxtow.Loading.estimate`
-    at the hull's draft); ``sections``: a `SectionTable` to reuse (`plan_sections`,
+    gyration and the roll damping; None: ``Loading()``, G in the waterline plane over the
+    centre of buoyancy); ``sections``: a `SectionTable` to reuse (`plan_sections`,
     `jaxtow.strip.section_table`; None: solved here on the planned grid of
     ``n_frequencies``, module docstring); ``water``: ρ and g (`jaxtow.Water`). Bad values
     raise a ValueError naming the parameter (eagerly, or `equinox.error_if` under jit)."""
