@@ -75,19 +75,30 @@ def main(argv=None) -> int:
     ap.add_argument("first", type=Path)
     ap.add_argument("second", type=Path)
     ap.add_argument("--tol", type=float, default=1e-12)
+    ap.add_argument(
+        "--rename",
+        nargs="*",
+        default=[],
+        metavar="OLD=NEW",
+        help="a file of the first run that has another name in the second",
+    )
     args = ap.parse_args(argv)
+    renamed = dict(r.split("=", 1) for r in args.rename)
     out: list = []
     n = 0
     for f in sorted(args.first.glob("*.json")):
-        g = args.second / f.name
-        n += compare_json(
-            json.loads(f.read_text()), json.loads(g.read_text()), f.name, args.tol, out
-        )
+        g = args.second / renamed.get(f.name, f.name)
+        if g.is_file():
+            n += compare_json(
+                json.loads(f.read_text()), json.loads(g.read_text()), f.name, args.tol, out
+            )
     for f in sorted(args.first.glob("*.nc")):
-        n += compare_netcdf(f, args.second / f.name, args.tol, out)
+        g = args.second / renamed.get(f.name, f.name)
+        if g.is_file():
+            n += compare_netcdf(f, g, args.tol, out)
     names = [
-        {p.name for p in d.iterdir() if not p.name.startswith(".")}
-        for d in (args.first, args.second)
+        {renamed.get(p.name, p.name) for p in args.first.iterdir() if not p.name.startswith(".")},
+        {p.name for p in args.second.iterdir() if not p.name.startswith(".")},
     ]
     missing = sorted(names[0] - names[1])  # hidden files (a lock) are not outputs
     out += [f"{m}: missing in the second run" for m in missing]

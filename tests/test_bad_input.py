@@ -460,6 +460,7 @@ def test_no_unexplained_nan_in_a_wide_calm_sweep(model):
     assert a["nan"] == a["masked"] + a["flagged"] > 0  # empty slots exist: the audit sees them
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow  # about a minute on 2 cores once compiled
 def test_the_full_nan_audit_finds_no_unexplained_nan():
     """The scale audit itself: 10^6 calm points and 10^5 points in regular waves over wide

@@ -72,8 +72,12 @@ def test_calm_writes_figures_datasets_summary(tmp_path, capsys):
     assert "barge2a_time_traces.png" in names and "barge2b_phase_portraits.png" in names
     summary = json.loads((out / "summary.json").read_text())
     assert summary["barge2b"]["time_domain"]["ended_early"] is False
-    assert summary["barge2a"]["equilibria_stability"] == ["unstable"]
-    assert summary["barge2b"]["equilibria_stability"] == ["unstable", "stable", "unstable"]
+
+    def stability(v):
+        return [e["stability"] for e in summary[v]["design"]["equilibria"]]
+
+    assert stability("barge2a") == ["unstable"]
+    assert stability("barge2b") == ["unstable", "stable", "unstable"]
     ds = load_dataset(out / "barge2b_max_real_vs_l0.nc")
     assert ds.sizes["l0"] == 6
     assert "estimates" in capsys.readouterr().out

@@ -18,7 +18,12 @@ ROOT = Path(__file__).resolve().parents[1]
 PAGES = [
     pytest.param(ROOT / "README.md", id="README.md"),
     *(
-        pytest.param(p, id=p.name, marks=pytest.mark.slow)
+        pytest.param(
+            p,
+            id=p.name,
+            # waves.md runs the thesis's wave study (minutes): with the heavy tests
+            marks=[pytest.mark.slow] + ([pytest.mark.heavy] if p.name == "waves.md" else []),
+        )
         for p in sorted((ROOT / "docs" / "howto").glob("*.md"))
     ),
 ]

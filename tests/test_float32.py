@@ -46,6 +46,7 @@ def test_bisection_tolerance_follows_the_dtype():
     assert 1e-6 < bisection_atol(jnp.float32) < 1e-5
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow
 def test_builtin_tows_in_float32_match_float64():
     r = subprocess.run(

@@ -212,6 +212,7 @@ def test_a_heavy_pennant_carries_its_weight_at_the_hawser():
     assert 0.0 < sag < 0.5 * 2.5
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow
 def test_barge2_on_wire_with_a_chain_pennant():
     """600 m of 76 mm IWRC wire with 50 m of 76 mm R3 chain at the hawser, against the same

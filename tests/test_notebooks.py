@@ -26,6 +26,7 @@ EXPECTED = {
         "central difference",
         "bow rake 5.49 m ->",
     ],
+    "06_risk.ipynb": ["Hs 3.5 m: P(fishtail) =", "MPM tension", "McNemar p ="],
 }
 
 

@@ -186,15 +186,14 @@ def test_tabulated_pull_curve_matches_quadratic(calm):
 @pytest.mark.slow  # default-suite time (the operating-speed solve compiles for 40 s)
 def test_cli_table():
     from jaxtow.cli.resistance import build, format_table, read_config
-    from jaxtow.studies._resistance import evaluate
+    from jaxtow.studies import evaluate_resistance
 
     tow, tug, seas, heading, route = build(read_config("barge2"))
-    row = evaluate(tow, tug, seas[1], heading, route, n_tp=5)
+    row = evaluate_resistance(tow, tug, seas[1], heading, route, n_tp=5)
     text = format_table([row], tug, route)
-    assert "sailing" in text and f"{row['operating_speed']:.2f}" in text
-    assert (
-        row["operating_speed"] < row["physical_tp_range"][1]
-    )  # sanity: a speed in m/s, a range in s
+    assert row.operating_speed is not None and row.physical_tp_range is not None
+    assert "sailing" in text and f"{row.operating_speed:.2f}" in text
+    assert row.operating_speed < row.physical_tp_range[1]  # a speed in m/s, a range in s
 
 
 def test_cli_config_errors(tmp_path):

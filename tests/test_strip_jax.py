@@ -54,6 +54,7 @@ def test_motions_and_resistance_run_under_jit():
     assert np.all(np.isfinite(np.asarray(c.added_mass)))
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow
 def test_gradient_in_the_beam_under_jit_equals_central_differences():
     """d/dB of the heave response of a Wigley hull built from its dimensions, by
@@ -123,6 +124,7 @@ def test_vmap_over_hull_variants_equals_one_by_one():
         np.testing.assert_allclose(batched[k], np.asarray(rao(b)), rtol=1e-6, atol=1e-10)
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow
 def test_one_section_table_serves_three_speeds_and_thirteen_headings(monkeypatch):
     """The section solve is a value: one `SectionTable` planned over 3 speeds × 13 headings

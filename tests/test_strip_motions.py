@@ -92,6 +92,7 @@ def test_head_sea_added_resistance_is_positive_and_peaks_near_resonance(wigley):
     assert np.max(np.abs(np.asarray(beam.resistance))) < 1e-9 * r.max()
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow
 def test_strip_drift_table_is_a_qtf_with_the_short_wave_limit():
     """The zero-speed strip drift table of the box: a `QTF` (consumers interpolate it); in
@@ -111,7 +112,9 @@ def test_strip_drift_table_is_a_qtf_with_the_short_wave_limit():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("method", ["gerritsma_beukelman", "maruo"])
+@pytest.mark.parametrize(
+    "method", [S.GerritsmaBeukelman(), S.FarField()], ids=["gerritsma_beukelman", "far_field"]
+)
 def test_added_resistance_gradient_against_finite_differences(wigley, method):
     """d R_AW / d(half-breadths scale) by jax.grad equals central differences (1e-5), for
     both methods at speed (the far field through its forward-speed wave systems)."""
@@ -194,6 +197,7 @@ def test_strip_drift_is_a_tow_drift_source():
     assert any("strip theory" in note for _, note in tow.assumed)
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow
 def test_committed_drift_comparison_matches_the_strip_side():
     """benchmarks/data/strip/drift_vs_panel.json: the strip values recomputed here equal the
@@ -313,6 +317,7 @@ def test_maruo_steady_limit_adds_the_waves_ahead_and_behind():
     assert r == pytest.approx(1025.0 * k0**2 / (2 * np.pi) * kelvin[0], rel=1e-3)
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow
 def test_maruo_at_forward_speed_is_continuous_and_converged(monkeypatch):
     """The forward-speed far field tends to the zero-speed one as U → 0 (two different

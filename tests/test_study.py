@@ -369,6 +369,7 @@ def test_claims_table_has_a_column_per_source_and_form():
     )
 
 
+@pytest.mark.heavy  # minutes on 2 cores: pytest -m heavy
 @pytest.mark.slow  # 5 to 10 min on 2 cores, most of it compiling the report's kernels
 def test_report_waves_writes_claims(tmp_path, capsys):
     """The whole report on a small grid, with two drift sources (the near field and the far

@@ -9,6 +9,7 @@ import sys
 import tomllib
 from pathlib import Path
 
+import msgspec
 import numpy as np
 
 import jaxtow as jt
@@ -130,7 +131,7 @@ def format_table(rows: list, tug, route_length) -> str:
 
     cols, body = jt.studies.resistance_table(rows)
     table = [list(cols), *body]
-    notes = [f"! {r['sea_state']}: {r['message']}" for r in rows if r["message"]]
+    notes = [f"! {r.sea_state}: {r.message}" for r in rows if r.message]
     width = [max(len(row[j]) for row in table) for j in range(len(cols))]
     lines = [head, ""]
     for k, row in enumerate(table):
@@ -206,7 +207,7 @@ def cmd_resistance(args):
             efficiency=float(tug.efficiency),
         ),
         route_length_m=route,
-        sea_states=study.rows,
+        sea_states=[msgspec.to_builtins(r) for r in study.rows],
     )
     jt.io.write_file(out / "summary.json", json.dumps(summary, indent=2, default=float))
     print(f"wrote figures, NetCDF datasets and summary.json to {out}")

@@ -61,12 +61,15 @@ def _number(x, units: str) -> str:
 
 
 def _criteria(s: StudySummary) -> dict:
-    """The guideline table: criterion, condition, value, limit, verdict, margin, why/basis."""
+    """The guideline table: criterion, value, limit, verdict, margin, why/basis; the failures
+    first, then NOT DETERMINED, NOT CHECKED and PASS (each in the study's order)."""
     a = s.assessment
     if a is None:
         return dict(rows=[], classes=[], guideline="", counts={})
     rows, classes = [], []
-    for ch in a.checks:
+    # what stops the tow first: failures, then what cannot be decided, then the passes
+    order = {"fail": 0, "not determined": 1, "not checked": 2, "pass": 3}
+    for ch in sorted(a.checks, key=lambda c: order.get(c.verdict, 4)):
         u = ch.units
         sign = ">=" if ch.kind == "min" else "<="
         margin = _number(ch.margin, u)

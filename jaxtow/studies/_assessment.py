@@ -146,8 +146,9 @@ def _catenary_record(model, water_depth) -> CatenaryRecord:
 
 
 def _strength_record(tow, model, conditions: list[Condition]) -> StrengthRecord | None:
-    """The towline's catalogue pieces and the largest mean end tension of the valid
-    equilibria (calm water and every sea state) against the weakest piece's MBL."""
+    """The towline's catalogue pieces and the largest mean end tension of the equilibria found
+    (calm water, every sea state at the design speed and at its operating speed) against the
+    weakest piece's MBL."""
     make = tow.make
     if make is None:
         return None
@@ -157,8 +158,10 @@ def _strength_record(tow, model, conditions: list[Condition]) -> StrengthRecord 
         rows.append(LineSegmentRow(**dataclasses.asdict(make.bridle_leg)))
     best, where = None, None
     for c in conditions:
+        # every equilibrium the solver found, also outside the drift theory's validity: the
+        # tension is the mean force balance (at an operating speed, the tug's pull)
         for e in c.equilibria:
-            if e.valid and (best is None or e.tension > best):
+            if e.found and math.isfinite(e.tension) and (best is None or e.tension > best):
                 best, where = e.tension, c.name
     out = dict(segments=rows, weakest=weakest.name, mbl=weakest.mbl)
     if best is not None:
@@ -219,6 +222,7 @@ def tow_study(
     t1: float | None = None,
     n_save: int = 2001,
     speeds=None,
+    risk: str | None = None,
     store=None,
 ) -> TowStudy:
     """Run the whole assessment of ``tow`` (a `jaxtow.tow.Tow`). The grids, the run length
@@ -231,6 +235,10 @@ def tow_study(
     finished is returned, with ``summary.incomplete`` (`Incomplete`). With ``store`` (a
     `jaxtow.io.StepStore`) each step's result is stored as it finishes and a stored step is
     read back instead of run, so a killed study resumes with the same results."""
+    if risk is not None:
+        if risk not in ("auto", "always", "never"):
+            raise ValueError(f"parameter 'risk' must be 'auto', 'always' or 'never', got {risk!r}")
+        tow = dataclasses.replace(tow, study=dataclasses.replace(tow.study, risk=risk))
     opts = tow.study
     do_td = opts.time_domain if time_domain is None else time_domain
     t1 = opts.t1 if t1 is None else t1

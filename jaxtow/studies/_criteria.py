@@ -359,8 +359,15 @@ def _reason(checks: list[CheckRow], conditions: list[Condition]) -> tuple[str, s
                 "not determined where the theory is outside its validity: "
                 + _join([c.condition or c.criterion for c in nd])
             )
-        tail = f"{len(nd)} of {n} criteria not determined, {len(nc)} not checked" + (
-            f" ({_join(sorted({c.reason.split(':')[0] for c in nc}))})" if nc else ""
+        counts = [
+            f"{k} {word}"
+            for k, word in ((len(nd), "not determined"), (len(nc), "not checked"))
+            if k
+        ]
+        tail = (
+            f"of {n} criteria {n - len(nd) - len(nc)} pass, "
+            + ", ".join(counts)
+            + (f" ({_join(sorted({c.reason.split(':')[0] for c in nc}))})" if nc else "")
         )
     else:
         verdict = "acceptable"

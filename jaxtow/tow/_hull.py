@@ -6,6 +6,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from .. import presets, strip
+from .._body import Loading
 from ..bem import MeshDriftSource
 from ..drift import WATERLINE_METHODS
 from ..io import read_coefficient_table, read_offsets, read_waterline
@@ -142,7 +143,7 @@ def _strip(p: Problems, h: dict, drift, base, waterline) -> StripSource:
                 "drift = 'strip' needs waterline = 'box' or 'barge2' (the hull of the strips); "
                 "for another hull give {strip = OFFSETS_FILE}",
             )
-        return StripSource(hull, waterline, name)
+        return StripSource(hull, waterline, name, loading=Loading.estimate(T))
     extra = set(drift) - {"strip"}
     if extra:
         p.error(
@@ -155,7 +156,7 @@ def _strip(p: Problems, h: dict, drift, base, waterline) -> StripSource:
         hull = read_offsets(path)
     except ValueError as e:
         p.error(("hull", "drift"), str(e))
-    return StripSource(hull, waterline, str(path))
+    return StripSource(hull, waterline, str(path), loading=Loading.estimate(T))
 
 
 def read_wind(p: Problems, h: dict, base, assumed: list):
