@@ -21,8 +21,10 @@ PAGES = [
         pytest.param(
             p,
             id=p.name,
-            # waves.md runs the thesis's wave study (minutes): with the heavy tests
-            marks=[pytest.mark.slow] + ([pytest.mark.heavy] if p.name == "waves.md" else []),
+            # waves.md runs the thesis's wave study and bem.md a 1 m panel solve (minutes
+            # each on 2 cores): with the heavy tests
+            marks=[pytest.mark.slow]
+            + ([pytest.mark.heavy] if p.name in ("waves.md", "bem.md") else []),
         )
         for p in sorted((ROOT / "docs" / "howto").glob("*.md"))
     ),

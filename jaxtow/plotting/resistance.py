@@ -137,7 +137,8 @@ def resistance_figures(study) -> dict:
         )[0]
         u, pull, total = study.curves[sea.name]
         r = study.rows[i]
-        pt = (r["operating_speed"], r["pull"]) if "operating_speed" in r else None
+        held = r.operating_speed is not None
+        pt = (r.operating_speed, float(np.interp(r.operating_speed, u, pull))) if held else None
         figs[f"operating_point_{tag}"] = plot_operating_point(
             u, pull, {"total": total}, pt, title=f"{tow.name}: {sea.name} (fig. 2.1)"
         )
