@@ -614,3 +614,8 @@ def test_the_stationary_form_is_the_zero_speed_drift():
     for u in (0.0, 2.0, 4.0):
         F = jt.drift.sailing_drift(q, 0.8, 0.3, u, 0.1, 0.01, form="stationary")
         np.testing.assert_array_equal(np.asarray(F), np.asarray(q(0.8, 0.3)))
+
+
+def test_the_study_names_a_bad_risk_option():
+    with pytest.raises(jt.ParameterError, match="'risk' must be 'auto', 'always' or 'never'"):
+        jt.studies.tow_study(jt.tow.load("barge2a"), risk="sometimes")

@@ -24,6 +24,7 @@ from .._equilibrium import equilibria
 from .._interrupt import requested as interrupt_requested
 from .._metrics import FishtailMetrics, Trajectory, fishtail_metrics, trajectory
 from .._results import sweep
+from .._rules import ParameterError
 from .._simulate import initial_state, simulate
 from .._units import RHO_SEA, G
 from ..drift import irregular_sailing_drift
@@ -234,10 +235,13 @@ def tow_study(
     Nothing finished is lost: a step that fails, or a Ctrl-C, ends the study there and what
     finished is returned, with ``summary.incomplete`` (`Incomplete`). With ``store`` (a
     `jaxtow.io.StepStore`) each step's result is stored as it finishes and a stored step is
-    read back instead of run, so a killed study resumes with the same results."""
+    read back instead of run, so a killed study resumes with the same results. ``risk``
+    ("auto", "always" or "never") overrides ``[study] risk``, the irregular-sea Monte Carlo."""
     if risk is not None:
         if risk not in ("auto", "always", "never"):
-            raise ValueError(f"parameter 'risk' must be 'auto', 'always' or 'never', got {risk!r}")
+            raise ParameterError(
+                "risk", f"parameter 'risk' must be 'auto', 'always' or 'never', got {risk!r}"
+            )
         tow = dataclasses.replace(tow, study=dataclasses.replace(tow.study, risk=risk))
     opts = tow.study
     do_td = opts.time_domain if time_domain is None else time_domain
