@@ -356,14 +356,9 @@ def table(path) -> str:
 
 
 def write_table(path):
-    text = DOCS.read_text(encoding="utf-8")
-    block = f"{BEGIN}\n\n{table(path)}\n\n{END}"
-    if BEGIN in text:
-        a, b = text.index(BEGIN), text.index(END) + len(END)
-        text = text[:a] + block + text[b:]
-    else:
-        text = text.rstrip() + "\n\n" + block + "\n"
-    DOCS.write_text(text, encoding="utf-8")
+    from _docs_block import write_block  # beside this script
+
+    write_block(DOCS, BEGIN, END, table(path))
 
 
 def main(argv=None):

@@ -114,10 +114,9 @@ def table(out) -> str:
 
 
 def write_docs(out) -> None:
-    text = DOCS.read_text(encoding="utf-8")
-    block = f"{BEGIN}\n\n{table(out)}\n\n{END}"
-    a, b = text.index(BEGIN), text.index(END) + len(END)
-    DOCS.write_text(text[:a] + block + text[b:], encoding="utf-8")
+    from _docs_block import write_block  # beside this script
+
+    write_block(DOCS, BEGIN, END, table(out))
 
 
 if __name__ == "__main__":

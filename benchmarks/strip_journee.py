@@ -226,9 +226,9 @@ def tables(res) -> str:
 
 
 def write_docs(text: str) -> None:
-    doc = DOCS.read_text()
-    i, j = doc.index(BEGIN) + len(BEGIN), doc.index(END)
-    DOCS.write_text(doc[:i] + "\n\n" + text + "\n\n" + doc[j:])
+    from _docs_block import write_block  # beside this script
+
+    write_block(DOCS, BEGIN, END, text)
 
 
 def main(argv=None):
