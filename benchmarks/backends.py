@@ -173,8 +173,8 @@ def study(platform, timeout):
             r = subprocess.run(
                 [
                     sys.executable,
-                    "-m",
-                    "jaxtow.cli",
+                    "-c",
+                    "import sys; from jaxtow.cli import main; sys.exit(main())",
                     "study",
                     "barge2a",
                     "--out",
