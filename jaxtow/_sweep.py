@@ -108,7 +108,10 @@ def point_kernel(
     )
     if routh_hurwitz:
         out["routh_hurwitz"] = jax.vmap(matrix_routh_hurwitz_stable)(J)
-    flags = jax.vmap(lambda y: validity(mdl, y))(eqs.state)  # per equilibrium slot
+    # per equilibrium slot; unchecked like the rest of the kernel (the sweep checks its grids
+    # beforehand): a check here is a host callback, and JAX's persistent cache never
+    # stores a program that holds one, so every run would compile the kernel again
+    flags = jax.vmap(lambda y: validity(mdl, y, throw=False))(eqs.state)
     out.update({f"validity_{k}": v for k, v in flags.items()})
     out["physics_valid"] = jax.vmap(all_valid)(flags)
     return out

@@ -84,3 +84,26 @@ def test_cache_switches(tmp_path, monkeypatch):
         {"XDG_CACHE_HOME": str(tmp_path)},
     )
     assert not (tmp_path / "jaxtow").exists()
+
+
+@pytest.mark.parametrize("waves", [False, True])
+def test_the_sweep_kernel_holds_no_host_callback(waves):
+    """JAX's persistent cache never stores a program holding a host callback (an
+    `equinox.error_if` check compiles to one), so such a kernel compiles again in every
+    run. The sweep kernel checks its grid before it runs and holds none, in calm water and
+    with the regular-wave drift force of the wave study."""
+    import jax.numpy as jnp
+
+    from jaxtow._sweep import make_batched_kernel
+
+    if waves:
+        model = jt.studies.WaveStudy(n=5, n_grid=101, compile_cache=False).wave_model("2a")
+        params = {"l0": jnp.linspace(0.5, 2.5, 4), "external.omega": jnp.linspace(0.4, 2.0, 4)}
+    else:
+        model = jt.TowModel(vessel=jt.presets.barge_2b(), towline=jt.presets.default_towline())
+        params = {"l0": jnp.linspace(0.5, 2.5, 4)}
+    kernel = make_batched_kernel(
+        method="numerical", n_grid=101, max_roots=4, psi_range=1.5, eig_method="routh"
+    )
+    text = kernel.jitted.trace(model, params).lower().as_text()
+    assert "callback" not in text
