@@ -3,8 +3,8 @@ compiling the wave-map kernel cost.
 
 1. Commands, each run twice as a user would, in fresh processes sharing one fresh cache
    folder (``JAXTOW_COMPILE_CACHE``): the first run compiles every kernel and stores it, the
-   second reads them back. ``jaxtow calm`` (the README's main job) and ``jaxtow report
-   waves`` on a small grid (``--n 5``, one source and form, no attribution or slow-drift
+   second reads them back. ``jaxtow calm``, ``jaxtow study barge2a`` (the README's main
+   job) and ``jaxtow report waves`` on a small grid (``--n 5``, one source and form, no attribution or slow-drift
    runs: the full report takes about an hour on 2 cores). Printed: both times and their
    ratio (target: the second run at least 2x faster).
 2. The sweep kernel of the wave study (Barge 2a, regular head waves, the shipped near-field
@@ -39,6 +39,7 @@ RUN = "import sys; from jaxtow.cli import main; sys.exit(main())"
 
 COMMANDS = {
     "calm": ["calm"],
+    "study": ["study", "barge2a", "--quiet"],
     "report-waves": [  # report waves on a 5-point grid
         "report",
         "waves",

@@ -5,7 +5,8 @@ where the forward-speed drift theory is outside its validity."""
 
 from __future__ import annotations
 
-import jax.numpy as jnp
+import equinox as eqx
+import jax
 import msgspec
 import numpy as np
 
@@ -76,21 +77,31 @@ def yaw_verdict(psi, max_real, found, stab_codes) -> str:
     return "fishtails"
 
 
+@eqx.filter_jit
+def _stability_and_validity(model, states):
+    """Stability and the validity flags of ``states`` as one compiled program: run eagerly,
+    their hundreds of operations are dispatched one by one on every run, cached or not. The
+    model's parameters were checked by `equilibria` before, so the program holds no run-time
+    check (a host callback, which would keep it out of the persistent compilation cache)."""
+    st = stability(model, states, throw=False)
+    flags = jax.vmap(lambda y: validity(model, y, throw=False))(states)
+    return st, flags, jax.vmap(all_valid)(flags)
+
+
 def condition(model, name: str, kind: str, sea=None) -> Condition:
     """The `Condition` of ``model``: every equilibrium, its stability and validity, and the
     verdict."""
-    eqs = equilibria(model)
-    st = stability(model, eqs.state)
+    eqs = equilibria(model)  # checks the model's parameters (a clear error names a bad one)
+    st, flags, ok = jax.device_get(_stability_and_validity(model, eqs.state))
     sc = model.reference_scales
     force, rate = float(sc.force), float(sc.u_tug) / sc.length
     found = np.asarray(eqs.valid)
     straight = straight_behind(np.asarray(eqs.psi), found)
     rows: list[EquilibriumRow] = []
     outside_all: set[str] = set()
+    flags = {k: np.asarray(v) for k, v in flags.items() if np.asarray(v).dtype == bool}
     for i in range(len(eqs)):
-        flags = validity(model, eqs.state[i])
-        bools = {k: bool(v) for k, v in flags.items() if jnp.asarray(v).dtype == bool}
-        outside = sorted(k for k, v in bools.items() if not v)
+        outside = sorted(k for k, v in flags.items() if not v[i])
         outside_all |= set(outside)
         rows.append(
             EquilibriumRow(
@@ -102,7 +113,7 @@ def condition(model, name: str, kind: str, sea=None) -> Condition:
                 max_real_nd=float(st.max_real[i]),
                 stability=STABILITY_LABELS[int(st.stability[i])],
                 found=bool(found[i]),
-                valid=bool(found[i]) and bool(all_valid(flags)),
+                valid=bool(found[i]) and bool(ok[i]),
                 outside=outside,
                 straight=bool(straight[i]),
             )
