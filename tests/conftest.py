@@ -28,8 +28,8 @@ def barge_2b():
     return jaxtow.presets.barge_2b()
 
 
-#: A worker's resident memory (3 GB) above which the compiled programs of the modules it has run are
-#: dropped after a module. JAX keeps every compiled executable for the life of the process;
+#: A worker's resident memory (3 GB) above which the compiled programs of the modules it has
+#: run are dropped after a module. JAX keeps every compiled executable for the life of the process;
 #: a worker running fifty slow tests grew past 5 GB (12.5 GB for the two), and on CI's
 #: 24 GB machine a worker aborted inside XLA's compiler late in the slow suite, most likely
 #: out of memory. Tests in one module share their kernels, so the caches are cleared between
