@@ -4,9 +4,9 @@ compiling the wave-map kernel cost.
 1. Commands, each run twice as a user would, in fresh processes sharing one fresh cache
    folder (``JAXTOW_COMPILE_CACHE``): the first run compiles every kernel and stores it, the
    second reads them back. ``jaxtow calm``, ``jaxtow study barge2a`` (the README's main
-   job) and ``jaxtow report waves`` on a small grid (``--n 5``, one source and form, no attribution or slow-drift
-   runs: the full report takes about an hour on 2 cores). Printed: both times and their
-   ratio (target: the second run at least 2x faster).
+   job) and ``jaxtow report waves`` on a small grid (``--n 5``, one source and form, no
+   attribution or slow-drift runs: the full report takes about an hour on 2 cores).
+   Printed: both times and their ratio (target: the second run at least 2x faster).
 2. The sweep kernel of the wave study (Barge 2a, regular head waves, the shipped near-field
    database, 401 scan headings, as `jaxtow.studies.WaveStudy` runs it), in a fresh process
    into an empty cache and again from the cache: the time to trace it (Python, every run),
