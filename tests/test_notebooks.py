@@ -27,6 +27,13 @@ EXPECTED = {
         "bow rake 5.49 m ->",
     ],
     "06_risk.ipynb": ["Hs 3.5 m: P(fishtail) =", "MPM tension", "McNemar p ="],
+    "07_strip_wigley_form.ipynb": [
+        "gradient (central difference):",
+        "BFGS: ",
+        "result True",
+        "optimum: B 0.39",
+        "re-run, 41 stations, 80 frequencies:",
+    ],
 }
 
 

@@ -33,24 +33,30 @@ _SERIES_COEF = tuple(float(c) for c in 1.0 / (_K * np.cumprod(_K)))  # 1/(k·k!)
 _N_ASYMPT = 30
 _FACT = tuple(float(c) for c in np.cumprod(np.r_[1.0, np.arange(1, _N_ASYMPT, dtype=float)]))
 _N_CF = 60
+#: The Horner loops' unroll factor: a trade between compile time (the loop body's size) and
+#: run time (the passes over the array), measured in benchmarks/bench_strip.py.
+UNROLL = 5
+
+
+def _horner(coef, x):
+    """Σ coef[k] x^k by Horner's rule, as a loop over the coefficients (a program of one
+    step, not of one step per term: the unrolled sums took most of the section solve's
+    compile time), with no (…, terms) array."""
+    c = jnp.asarray(coef[::-1])
+    return jax.lax.fori_loop(
+        1, c.shape[0], lambda k, s: s * x + c[k], jnp.full_like(x, c[0]), unroll=UNROLL
+    )
 
 
 def _series(w):
-    """e^{−w}(γ + Ln w + Σ w^k/(k·k!)), the sum by Horner's rule (one fused loop, no
-    (…, terms) array)."""
-    s = jnp.full_like(w, _SERIES_COEF[-1])
-    for c in _SERIES_COEF[-2::-1]:
-        s = s * w + c
-    return jnp.exp(-w) * (_EULER + jnp.log(w) + s * w)
+    """e^{−w}(γ + Ln w + Σ w^k/(k·k!)), the sum by Horner's rule."""
+    return jnp.exp(-w) * (_EULER + jnp.log(w) + _horner(_SERIES_COEF, w) * w)
 
 
 def _asymptotic(w):
     """Σ_{k<K} k!/w^{k+1} + iπ sgn(Im w) e^{−w} (the sum by Horner's rule in 1/w)."""
     inv = 1.0 / w
-    s = jnp.full_like(w, _FACT[-1])
-    for c in _FACT[-2::-1]:
-        s = s * inv + c
-    return s * inv + 1j * jnp.pi * jnp.sign(w.imag) * jnp.exp(-w)
+    return _horner(_FACT, inv) * inv + 1j * jnp.pi * jnp.sign(w.imag) * jnp.exp(-w)
 
 
 def _cf(w):

@@ -198,6 +198,13 @@ def _traced_grid(mag, floor, n):
     return lo * (hi / lo) ** jnp.linspace(0.0, 1.0, n)
 
 
+def _vector(v):
+    """A 1-D float array (converted on the host where the value is concrete: no program)."""
+    if is_concrete(v):
+        return jnp.asarray(np.atleast_1d(np.asarray(v, dtype=float)))
+    return jnp.atleast_1d(jnp.asarray(v, dtype=float))
+
+
 def _check_inputs(omega, beta, u, n_frequencies):
     for rule, name, v in ((POSITIVE, "omega", omega), (FINITE, "beta", beta)):
         rule.check(name, v)
@@ -206,11 +213,6 @@ def _check_inputs(omega, beta, u, n_frequencies):
     NONNEGATIVE.check("u", u)
     if n_frequencies is not None and int(n_frequencies) < 2:
         raise ValueError(f"parameter 'n_frequencies' must be >= 2, got {n_frequencies!r}")
-    return [
-        POSITIVE.traced("omega", omega),
-        FINITE.traced("beta", beta),
-        NONNEGATIVE.traced("u (forward speed)", u),
-    ]
 
 
 def solve_motions(
@@ -226,9 +228,8 @@ def solve_motions(
 ) -> MotionSolve:
     """`motions` with the solve's internals for the added resistance (`MotionSolve`)."""
     check_type("hull", hull, Hull)
-    omega = jnp.atleast_1d(jnp.asarray(omega, dtype=float))
-    beta = jnp.atleast_1d(jnp.asarray(beta, dtype=float))
-    checks = _check_inputs(omega, beta, u, n_frequencies)
+    omega, beta, u = _vector(omega), _vector(beta), jnp.asarray(u, dtype=float)
+    _check_inputs(omega, beta, u, n_frequencies)
     loading = _loading(hull, loading)
     if sections is not None:
         check_type("sections", sections, SectionTable)
@@ -237,25 +238,50 @@ def solve_motions(
                 f"parameter 'sections': a table of {sections.potentials.shape[0]} stations for "
                 f"a hull of {hull.x.shape[0]}"
             )
+        plan, grid = "table", None
+    elif is_concrete(u) and float(u) == 0.0:
+        plan, grid = "zero", None  # the frequencies themselves, each table entry exactly
+    elif holds_tracers((hull, omega, beta, u, loading)) or n_frequencies is None:
+        plan, grid = "traced", None
+    else:  # a host plan: the grid's size depends on the values
+        floor = float(LOW_FREQUENCY * np.sqrt(water.g / float(np.sum(np.asarray(hull.dx)))))
+        we = _encounter(omega, beta, u, water.g)
+        plan, grid = "host", jnp.asarray(_grid(np.abs(np.asarray(we)), floor, n_frequencies))
+    n = 40 if n_frequencies is None else int(n_frequencies)
+    out, checks = _solve_program(hull, omega, beta, u, loading, sections, grid, water, plan, n)
+    return guard(out, checks)
+
+
+@jax.jit
+def _encounter(omega, beta, u, g):
     nw, nb = omega.shape[0], beta.shape[0]
-    w_flat, b_flat = jnp.repeat(omega, nb), jnp.tile(beta, nw)
-    we_true = encounter_frequency(w_flat, b_flat, u, g=water.g)
+    return encounter_frequency(jnp.repeat(omega, nb), jnp.tile(beta, nw), u, g=g)
+
+
+@eqx.filter_jit
+def _solve_program(hull, omega, beta, u, loading, sections, grid, water, plan, n):
+    """The whole solve after the host's plan, one compiled program (an eager call would
+    dispatch and compile hundreds of single operations): the section table where none is
+    given, the motions, and the traced checks, returned for `guard` to raise on the host or
+    attach under an outer trace."""
+    checks = [
+        POSITIVE.traced("omega", omega),
+        FINITE.traced("beta", beta),
+        NONNEGATIVE.traced("u (forward speed)", u),
+    ]
+    nw, nb = omega.shape[0], beta.shape[0]
+    we_true = encounter_frequency(jnp.repeat(omega, nb), jnp.tile(beta, nw), u, g=water.g)
     floor = _floor(hull, water)
     index = None
-    if sections is None:
-        static_zero = is_concrete(u) and float(u) == 0.0
-        if static_zero:  # the frequencies themselves, each table entry exactly
-            sections = section_table(hull, jnp.maximum(omega, floor), water=water)
-            index = jnp.repeat(jnp.arange(nw), nb)
-        elif holds_tracers((hull, omega, beta, u)) or n_frequencies is None:
-            n = 40 if n_frequencies is None else int(n_frequencies)
-            grid = _traced_grid(jnp.abs(we_true), floor, n)
-            sections = section_table(hull, grid, water=water)
-        else:
-            grid = _grid(np.abs(np.asarray(we_true)), float(floor), n_frequencies)
-            sections = section_table(hull, grid, water=water)
+    if plan == "zero":
+        sections = section_table(hull, jnp.maximum(omega, floor), water=water)
+        index = jnp.repeat(jnp.arange(nw), nb)
+    elif plan == "traced":
+        sections = section_table(hull, _traced_grid(jnp.abs(we_true), floor, n), water=water)
+    elif plan == "host":
+        sections = section_table(hull, grid, water=water)
     out = _solve(hull, omega, beta, u, we_true, floor, sections, index, loading, water)
-    return guard(out, checks + hull.checks() + loading.checks())
+    return out, checks + hull.checks() + loading.checks()
 
 
 def _solve(hull, omega, beta, u, we_true, floor, sections, index, loading, water):

@@ -314,13 +314,23 @@ def added_resistance(
         water=water,
         n_frequencies=n_frequencies,
     )
+    zero_speed = is_concrete(u) and float(u) == 0.0
+    return _resistance_program(method, hull, solve, water, zero_speed)
+
+
+@eqx.filter_jit
+def _resistance_program(method, hull, solve, water, zero_speed):
+    """The resistance from the solve, one compiled program (not hundreds of eager ones).
+    ``zero_speed`` (static): the speed was the number zero, which the methods may treat
+    exactly (handed to them as a concrete zero)."""
     m = solve.motions
-    r = method.resistance(hull, solve, water)
+    if zero_speed:
+        solve = eqx.tree_at(lambda s: s.motions.u, solve, np.zeros(()))
     return AddedResistance(
         omega=m.omega,
         beta=m.beta,
         u=m.u,
-        resistance=r.reshape(m.valid.shape),
+        resistance=method.resistance(hull, solve, water).reshape(m.valid.shape),
         motions=m,
         valid=method.valid(m),
         method=method,

@@ -47,6 +47,7 @@ import functools
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 from jaxtyping import Array, Complex, Float
 
 from .._units import SEA_WATER, Water
@@ -107,47 +108,52 @@ def _rankine(z, a, b):
     return pot, vel
 
 
+def _segments(lines):
+    """The panels of the polylines ``lines`` (between neighbours of one line, never across
+    two lines) as the indices of their first vertex in the lines' concatenation, in order
+    (a host constant: the lines' sizes are static)."""
+    sizes = [v.shape[0] for v in lines]
+    starts = np.cumsum([0] + sizes[:-1])
+    return np.concatenate([np.arange(s, s + n - 1) for s, n in zip(starts, sizes)])
+
+
 def _wave(z, lines, nu):
-    """The wave part of the sources on each polyline of ``lines`` (panels between
+    """The wave part of the sources on the panels of the polylines ``lines`` (panels between
     neighbours), over the image panels: ∫ [2 f(w) − 2πi e^{−w}] ds, real in space for the
     potential's two time components, and the z-derivatives. The exponential integral is
     evaluated once per point and vertex, for all the lines in one call, and shared by the
     two panels that meet at a vertex.
 
-    Returns, per line, (∫f ds, ∫e^{−w} ds, d/dz ∫f ds, d/dz ∫e^{−w} ds), each (points,
-    panels)."""
+    Returns (∫f ds, ∫e^{−w} ds, d/dz ∫f ds, d/dz ∫e^{−w} ds), each (points, panels), the
+    panels of all the lines in order (`_segments`)."""
     img = jnp.conj(jnp.concatenate(lines))
+    first = _segments(lines)
     w = 1j * nu * (z[..., None] - img)
-    f_all = exp_ei(w)
-    q_all = jnp.log(w) - f_all  # an antiderivative of f: d/dw (Ln w − f) = f
-    ex_all = jnp.exp(-w)
-    out, start = [], 0
-    for verts in lines:
-        stop = start + verts.shape[0]
-        f, q, ex = (v[..., start:stop] for v in (f_all, q_all, ex_all))
-        im = img[start:stop]
-        length = jnp.abs(im[1:] - im[:-1])
-        e = (im[1:] - im[:-1]) / length
-        # w = iν(z − ζ'), dw = −iν e ds: ∫ f ds = −(1/(iνe)) [Ln w − f], ∫ e^{−w} ds likewise
-        int_f = -(q[..., 1:] - q[..., :-1]) / (1j * nu * e)
-        int_e = (ex[..., 1:] - ex[..., :-1]) / (1j * nu * e)
-        # d/dz ∫ f ds = ∫ iν f'(w) ds = −(1/e) [f];  d/dz ∫ e^{−w} ds = −(1/e) [e^{−w}]
-        d_f = -(f[..., 1:] - f[..., :-1]) / e
-        d_e = -(ex[..., 1:] - ex[..., :-1]) / e
-        out.append((int_f, int_e, d_f, d_e))
-        start = stop
-    return out
+    f = exp_ei(w)
+    q = jnp.log(w) - f  # an antiderivative of f: d/dw (Ln w − f) = f
+    ex = jnp.exp(-w)
+    step = img[first + 1] - img[first]
+    e = step / jnp.abs(step)
+
+    def jump(v):  # v at each panel's end minus v at its start
+        return v[..., first + 1] - v[..., first]
+
+    # w = iν(z − ζ'), dw = −iν e ds: ∫ f ds = −(1/(iνe)) [Ln w − f], ∫ e^{−w} ds likewise
+    int_f = -jump(q) / (1j * nu * e)
+    int_e = jump(ex) / (1j * nu * e)
+    # d/dz ∫ f ds = ∫ iν f'(w) ds = −(1/e) [f];  d/dz ∫ e^{−w} ds = −(1/e) [e^{−w}]
+    return int_f, int_e, -jump(f) / e, -jump(ex) / e
 
 
-def _influence(z, normal, verts, wave, self_mask):
+def _influence(z, normal, a, b, wave, self_mask):
     """Potential and normal velocity at points z (unit normals ``normal``) of unit sources
-    on the panels of the polyline ``verts``, with their images and the wave terms ``wave``
-    (`_wave` of this line); complex in time; ``self_mask`` marks each point's own panel (its
-    jump is taken on the fluid side).
+    on the panels a → b, with their images and the wave terms ``wave`` (`_wave` of these
+    panels); complex in time; ``self_mask`` marks each point's own panel (its jump is taken
+    on the fluid side).
 
     Returns (pot, dn), each (points, panels)."""
     zz = z[:, None]
-    a, b = verts[None, :-1], verts[None, 1:]
+    a, b = a[None, :], b[None, :]
     pot_r, vel_r = _rankine(zz, a, b)
     pot_i, vel_i = _rankine(zz, jnp.conj(a), jnp.conj(b))
     int_f, int_e, d_f, d_e = wave
@@ -166,21 +172,21 @@ def _systems(y, z, nu, n_lid):
     hull = y + 1j * z
     lid = jnp.linspace(y[0], 0.0, n_lid + 1) + 0j
     lmid = 0.5 * (lid[:-1] + lid[1:])
-    # the sources: hull and lid panels, and their mirror images across x = 0 (the other half)
+    # the sources: hull and lid panels, and their mirror images across x = 0 (the other half),
+    # all in one set of panels (one copy of the influence code in the compiled program)
     lines = (hull, lid, -jnp.conj(hull), -jnp.conj(lid))
+    verts, first = jnp.concatenate(lines), _segments(lines)
     # the field points: the body's panel midpoints, then just below the lid's
     points = jnp.concatenate([mid, lmid])
     normals = jnp.concatenate([normal, jnp.full((n_lid,), -1j)])
-    waves = _wave(points, lines, nu)
-    rows = []
-    for k, (verts, wave) in enumerate(zip(lines, waves)):
-        n_src = verts.shape[0] - 1
-        own = jnp.eye(n_body + n_lid, n_src, dtype=bool) if k == 0 else False
-        rows.append(_influence(points, normals, verts, wave, own))
-    pot = jnp.concatenate([r[0][:n_body] for r in rows[:2]], axis=1)
-    pot_m = jnp.concatenate([r[0][:n_body] for r in rows[2:]], axis=1)
-    dn = jnp.concatenate([r[1] for r in rows[:2]], axis=1)
-    dn_m = jnp.concatenate([r[1] for r in rows[2:]], axis=1)
+    half = n_body + n_lid  # the panels of one half
+    own = np.eye(half, 2 * half, dtype=bool)
+    own[n_body:] = False  # a point's own panel: the body's only (the lid's points lie below)
+    pot_all, dn_all = _influence(
+        points, normals, verts[first], verts[first + 1], _wave(points, lines, nu), own
+    )
+    pot, pot_m = pot_all[:n_body, :half], pot_all[:n_body, half:]
+    dn, dn_m = dn_all[:, :half], dn_all[:, half:]
     return [(dn + sign * dn_m, pot + sign * pot_m) for sign in (1.0, -1.0)]
 
 
