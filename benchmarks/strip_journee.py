@@ -11,7 +11,10 @@ beside that code's own figures) are recomputed by `jaxtow.strip` at the same poi
 * heave RAOs of models III (Fn 0.2, 0.3) and I (Fn 0.3), and the zero-speed heave and
   pitch θa L/(2πζa) of models III and IV;
 * the added-resistance peaks R/(ρgζa²B²/L) of the four models, the largest value on a
-  λ/L grid of 0.7-2.5 in steps of 0.025, by Gerritsma-Beukelman and by the far field.
+  λ/L grid of 0.7-2.5 in steps of 0.025, by Gerritsma-Beukelman, by the far field, and by
+  Gerritsma-Beukelman with the bow's short-wave reflection (`strip.WithReflection`: jaxtow's
+  `drift.liu` on the Wigley waterline); beside it, as a check of that reflection part, the
+  head-sea reflection of Liu & Papanikolaou's own form (`wedge_reflection`: a wedge bow).
 
 Head seas, fresh water (ρ = 1000 kg/m³), k_yy = 0.25 L, G on the waterline. Writes
 ``benchmarks/data/strip/journee1992_compared.json`` and, with ``--docs``, the tables into
@@ -135,7 +138,13 @@ def resistance_peaks(data):
         u = fn * np.sqrt(G * L)
         scale = RHO * G * m["breadth"] ** 2 / L
         row = dict(model=model, froude=fn, measured=measured, anchor_gb=a_gb, anchor_far=a_far)
-        for key, method in (("gb", strip.GerritsmaBeukelman()), ("far", strip.FarField())):
+        wl = strip.wigley_waterline(L, m["breadth"], data["draft"], alpha=m["alpha"])
+        methods = (
+            ("gb", strip.GerritsmaBeukelman()),
+            ("far", strip.FarField()),
+            ("gb_reflection", strip.WithReflection(wl)),
+        )
+        for key, method in methods:
             r = strip.added_resistance(
                 hull, w, [0.0], u, loading=loading, water=WATER, method=method
             )
@@ -143,8 +152,34 @@ def resistance_peaks(data):
             i = int(np.argmax(raw))
             row[f"jaxtow_{key}"] = float(raw[i])
             row[f"jaxtow_{key}_at"] = float(PEAK_GRID[i])
+            if key == "gb":
+                gb = raw
+        wedge = gb + wedge_reflection(L, m["breadth"], data["draft"], wl, fn, PEAK_GRID) / scale
+        row["check_gb_wedge"] = float(np.max(wedge))
         out.append(row)
     return out
+
+
+def wedge_reflection(L, B, T, wl, fn, lam_over_l):
+    """A check of the reflection part, not a jaxtow method: Liu & Papanikolaou's head-sea
+    reflection in its own form, as their 2020 formula is written in a public implementation
+    (we could not read the paper itself): a wedge bow of half-angle E = atan(0.495B/L_E), L_E
+    the length of entrance (bow to 99 % of the breadth, on ``wl``), the draft factor
+    α_T = 1 − exp(−4π(T/λ − T/(2.5L))) and a factor 2.25 on Faltinsen's wedge,
+
+        R = (2.25/2) ρgζa² B α_T sin²E (1 + 2ωU/g) (0.87/C_B)^(1 + 4√Fn)   [N per ζa²]."""
+    pts = np.asarray(wl.points)
+    ahead = pts[pts[:, 0] >= 0.0]
+    x99 = np.max(ahead[ahead[:, 1] >= 0.99 * 0.5 * B, 0])
+    entrance = L / 2 - x99
+    e = np.arctan(0.495 * B / entrance)
+    lam = np.asarray(lam_over_l, float) * L
+    omega = np.sqrt(2 * np.pi * G / lam)
+    u = fn * np.sqrt(G * L)
+    alpha_t = np.where(lam <= 2.5 * L, 1 - np.exp(-4 * np.pi * (T / lam - T / (2.5 * L))), 0.0)
+    cb = float(wl.block_coefficient)
+    factor = (0.87 / cb) ** (1 + 4 * np.sqrt(fn))
+    return 2.25 / 2 * RHO * G * B * alpha_t * np.sin(e) ** 2 * (1 + 2 * omega * u / G) * factor
 
 
 def pct(a, b):
@@ -208,10 +243,12 @@ def tables(res) -> str:
     lines += [
         "",
         "**Added-resistance peaks** R/(ρgζa²B²/L) (jaxtow's largest value on λ/L 0.7-2.5, "
-        "step 0.025; its λ/L in brackets):",
+        "step 0.025; its λ/L in brackets; GB + reflection: `WithReflection`, with Liu & "
+        "Papanikolaou's wedge form of the reflection as a check in the last column):",
         "",
-        "| model | Fn | measured | anchor GB | jaxtow GB | anchor far field | jaxtow far field |",
-        "|---|---|---|---|---|---|---|",
+        "| model | Fn | measured | anchor GB | jaxtow GB | anchor far field | jaxtow far field "
+        "| jaxtow GB + reflection | check: GB + wedge |",
+        "|---|---|---|---|---|---|---|---|---|",
     ]
     for r in res["added_resistance_peaks"]:
         lines.append(
@@ -220,7 +257,10 @@ def tables(res) -> str:
             f"({pct(r['jaxtow_gb'], r['measured'])}; {r['jaxtow_gb_at']:.3g}) | "
             f"{r['anchor_far']:.1f} ({pct(r['anchor_far'], r['measured'])}) | "
             f"{r['jaxtow_far']:.1f} ({pct(r['jaxtow_far'], r['measured'])}; "
-            f"{r['jaxtow_far_at']:.3g}) |"
+            f"{r['jaxtow_far_at']:.3g}) | {r['jaxtow_gb_reflection']:.1f} "
+            f"({pct(r['jaxtow_gb_reflection'], r['measured'])}; "
+            f"{r['jaxtow_gb_reflection_at']:.3g}) | {r['check_gb_wedge']:.1f} "
+            f"({pct(r['check_gb_wedge'], r['measured'])}) |"
         )
     return "\n".join(lines)
 

@@ -9,8 +9,9 @@ Lewis-form hulls), `_strips` (the section solve as a reusable value, `SectionTab
 strip integrals, the zero-speed `hull_coefficients` and the `hydrostatics`), `_motions`
 (Salvesen-Tuck-Faltinsen motions with forward speed, `motions`), `_resistance` (added
 resistance by `GerritsmaBeukelman` and by the strips' `FarField` in Maruo's momentum
-balance, `added_resistance`, and a zero-speed drift table by the R-function method,
-`drift_qtf`). The loading condition is a `jaxtow.Loading` and the water a `jaxtow.Water`,
+balance, either with the bow's short-wave reflection (`WithReflection`, on the hull's
+waterline: `wigley_waterline`), `added_resistance`, and a zero-speed drift table by the
+R-function method, `drift_qtf`). The loading condition is a `jaxtow.Loading` and the water a `jaxtow.Water`,
 one value each, shared with the panel method. Everything runs under `jax.jit`,
 `jax.grad` and `jax.vmap`.
 """
@@ -46,6 +47,7 @@ if TYPE_CHECKING:
         AddedResistance as AddedResistance,
         FarField as FarField,
         GerritsmaBeukelman as GerritsmaBeukelman,
+        WithReflection as WithReflection,
         added_resistance as added_resistance,
         drift_qtf as drift_qtf,
     )
@@ -61,6 +63,7 @@ if TYPE_CHECKING:
         hull_coefficients as hull_coefficients,
         hydrostatics as hydrostatics,
         section_table as section_table,
+        wigley_waterline as wigley_waterline,
     )
 
 

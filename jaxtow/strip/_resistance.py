@@ -31,6 +31,12 @@ radiation is the symmetric (heave-pitch) part only, and the diffraction is the s
 relative-motion part, as in Gerritsma-Beukelman; waves that overtake the ship (ω_e < 0) are
 not built and are marked invalid.
 
+**The reflection at the bow** (``method=WithReflection(waterline)``): either method plus a
+waterline method's short-wave reflection at the same speed, by default Liu & Papanikolaou's
+correction of Faltinsen's asymptote (`jaxtow.drift.liu`, which vanishes in long waves
+through its own R-function factor); with Gerritsma-Beukelman it brings the peaks of all four
+of Journée's Wigley models at Fn 0.2 within 25 % (docs/strip.md).
+
 **Drift table at zero speed** (`drift_qtf`): the R-function method of jaxtow's drift
 package (`jaxtow.drift.r_function_method`: F = F_M + R(k_e T) F_R) with the Gerritsma-
 Beukelman (or far-field) resistance as the motion part F_M (surge only; strip theory gives no lateral
@@ -52,9 +58,9 @@ import numpy as np
 from jaxtyping import Array, Bool, Float
 
 from .._body import Loading
-from .._rules import check_type, is_concrete
+from .._rules import ParameterError, check_type, is_concrete
 from .._units import SEA_WATER, Water
-from ..drift import QTF, Waterline, r_function_method
+from ..drift import QTF, WATERLINE_METHODS, Waterline, r_function_method
 from ._hull import Hull
 from ._motions import Motions, MotionSolve, solve_motions
 from ._strips import SectionTable
@@ -63,6 +69,7 @@ __all__ = [
     "AbstractAddedResistanceMethod",
     "GerritsmaBeukelman",
     "FarField",
+    "WithReflection",
     "AddedResistance",
     "added_resistance",
     "drift_qtf",
@@ -155,6 +162,52 @@ class FarField(AbstractAddedResistanceMethod):
 
     def valid(self, motions):
         return motions.valid & (motions.omega_e > 0)
+
+
+class WithReflection(AbstractAddedResistanceMethod):
+    """A strip method's resistance plus the reflection of short waves at the bow:
+
+        R_AW = R_motion + R_reflection,
+
+    ``motion`` the strip method (default `GerritsmaBeukelman`, which holds the radiated part
+    only) and ``reflection`` the name of a waterline method of
+    `jaxtow.drift.WATERLINE_METHODS` on the hull's ``waterline`` (a `jaxtow.drift.Waterline`
+    whose ``block_coefficient`` is the hull's C_B; `wigley_waterline`), at the same speed
+    and headings. The default, ``"liu"``, is Liu & Papanikolaou's empirical correction of
+    Faltinsen's short-wave asymptote with speed: the factor (0.87/C_B)^((1 + 4√Fn) cos β)
+    and, per segment, the R-function of the encounter wave number and the local draft, which
+    makes the reflection vanish in long waves. A method without such a factor (``"faltinsen"``,
+    the bare asymptote) adds the short-wave limit at every wavelength; the drift table
+    (`drift_qtf`) weights that one by R(k_e T) instead. The far field already carries the
+    strips' relative-motion diffraction, so ``motion=FarField()`` may count part of the
+    reflection twice. Validity: the motion part's (the waterline methods' Froude flag,
+    `jaxtow.drift` FROUDE_MAX = 0.15, is set for barges and is not applied here)."""
+
+    waterline: Waterline
+    motion: AbstractAddedResistanceMethod = eqx.field(default_factory=GerritsmaBeukelman)
+    reflection: str = eqx.field(static=True, default="liu")
+    name: ClassVar[str] = "with_reflection"
+
+    def __check_init__(self):
+        check_type("waterline", self.waterline, Waterline)
+        check_type("motion", self.motion, AbstractAddedResistanceMethod)
+        if self.reflection not in WATERLINE_METHODS:
+            raise ParameterError(
+                "reflection",
+                f"parameter 'reflection' must be one of {sorted(WATERLINE_METHODS)}, got "
+                f"{self.reflection!r}",
+            )
+
+    def resistance(self, hull, solve, water):
+        m = solve.motions
+        nb = m.beta.shape[0]
+        w, beta = jnp.repeat(m.omega, nb), jnp.tile(m.beta, m.omega.shape[0])
+        short_wave = WATERLINE_METHODS[self.reflection]
+        est = short_wave(self.waterline, w, beta, m.u, rho=water.rho, g=water.g)
+        return self.motion.resistance(hull, solve, water) - est.fx
+
+    def valid(self, motions):
+        return self.motion.valid(motions)
 
 
 class AddedResistance(eqx.Module):

@@ -15,7 +15,8 @@ import numpy as np
 from jaxtyping import Array, Complex, Float
 
 from .._units import SEA_WATER, Water
-from ._hull import Hull
+from ..drift import Waterline, waterline
+from ._hull import Hull, wigley
 from ._sections import panels, section_coefficients
 
 __all__ = [
@@ -25,6 +26,7 @@ __all__ = [
     "hull_coefficients",
     "Hydrostatics",
     "hydrostatics",
+    "wigley_waterline",
 ]
 
 
@@ -244,3 +246,22 @@ def hydrostatics(hull: Hull) -> Hydrostatics:
         i_xx=jnp.sum(hull.x**2 * b * hull.dx),
         i_yy=jnp.sum(b**3 / 12.0 * hull.dx),
     )
+
+
+def wigley_waterline(
+    length, breadth, draft, *, alpha=None, n_points: int = 101, n_stations: int = 21
+) -> Waterline:
+    """The waterline of `jaxtow.strip.wigley` (L, B, T, α) as a `jaxtow.drift.Waterline`
+    for the waterline methods (`WithReflection`, `drift_qtf`): its half-breadth at z = 0,
+    (B/2)(1 − ξ²) (with α: (B/2)(1 − ξ²)(1 + 0.2ξ²)), at ``n_points`` stations from bow to
+    stern, wall-sided (the sections' slope at the waterline is zero), with the block
+    coefficient of the strips of ``n_stations`` (∇/(LBT) of `hydrostatics`). NumPy on the
+    host (numbers, not traced)."""
+    xi = np.linspace(1.0, -1.0, int(n_points))
+    eta = 1.0 - xi**2 if alpha is None else (1.0 - xi**2) * (1.0 + 0.2 * xi**2)
+    half = np.stack([0.5 * float(length) * xi, 0.5 * float(breadth) * eta], axis=1)
+    half[[0, -1], 1] = 0.0
+    points = np.concatenate([half, half[-2::-1] * np.array([1.0, -1.0])])
+    hull = wigley(length, breadth, draft, alpha=alpha, n_stations=n_stations)
+    cb = float(hydrostatics(hull).volume) / (float(length) * float(breadth) * float(draft))
+    return waterline(points, draft=float(draft), block_coefficient=cb, name="wigley")
