@@ -22,6 +22,7 @@ import math
 import equinox as eqx
 import jax
 import jax.numpy as jnp
+import numpy as np
 from jaxtyping import Array, Float
 
 from ._rules import POSITIVE, Checked, guard, in_range, is_concrete, rule_field
@@ -113,11 +114,25 @@ def at_tug_speed(model: TowModel, u_tug) -> TowModel:
     # where the model is used, by the rule on `Scales.u_tug` (no host callback in the sweeps)
     POSITIVE.check("u_tug", u_tug)
     u_tug = jnp.asarray(u_tug, dtype=float)
-    model = eqx.tree_at(
-        lambda m: m.towline, model, model.towline.rescaled((ref.u_tug / u_tug) ** 2)
-    )
+    towline = model.towline.rescaled((ref.u_tug / u_tug) ** 2)
+    model = eqx.tree_at(lambda m: m.towline, model, _like(model.towline, towline))
     n = len(all_scales(model))
     return eqx.tree_at(lambda m: [s.u_tug for s in all_scales(m)], model, [u_tug] * n)
+
+
+def _like(old, new):
+    """``new`` with each concrete scalar leaf as weakly typed as ``old``'s: a number times a
+    strongly typed factor becomes strongly typed, and a model whose leaves differ from
+    another's only in weak typing is a new argument type to every compiled kernel (a new
+    trace and compile of each, at every other speed)."""
+
+    def match(a, b):
+        weak = getattr(a, "weak_type", None)
+        if weak is None or not is_concrete(b) or np.ndim(b) != 0 or b.weak_type == weak:
+            return b
+        return jnp.asarray(float(b)) if weak else jnp.asarray(b, dtype=b.dtype)
+
+    return jax.tree.map(match, old, new)
 
 
 class ForceBreakdown(eqx.Module):

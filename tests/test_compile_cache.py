@@ -107,3 +107,27 @@ def test_the_sweep_kernel_holds_no_host_callback(waves):
     )
     text = kernel.jitted.trace(model, params).lower().as_text()
     assert "callback" not in text
+
+
+def test_the_model_at_another_tug_speed_shares_the_compiled_kernels():
+    """`at_tug_speed` keeps the type of every leaf (dtype and weak typing): the model at the
+    operating speed is the same argument type as at the design speed, so a kernel traced and
+    compiled for one serves the other (a strongly typed EA' made a new trace and compile of
+    every kernel the study's operating-speed conditions met)."""
+    import jax
+
+    tow = jt.tow.load("barge2a")
+    model = tow.sea_model(tow.sea_states[0])
+
+    def types(m):
+        return [(x.dtype, x.weak_type, x.shape) for x in jax.tree.leaves(m)]
+
+    moved = jt.at_tug_speed(model, 2.7)
+    assert types(moved) == types(model)
+    assert float(moved.towline.EA) == pytest.approx(
+        float(model.towline.EA) * (float(model.reference_scales.u_tug) / 2.7) ** 2
+    )
+    f = jax.jit(lambda m: m.towline.EA * m.scales.u_tug)
+    f(model)
+    f(moved)
+    assert f._cache_size() == 1
