@@ -34,6 +34,7 @@ def test_the_waterline_of_a_wigley_hull(model_i):
     assert 0.5 < cb < 0.6  # models I and II: 0.561 (Journée)
 
 
+@pytest.mark.slow  # default-suite time
 def test_the_reflection_is_the_waterline_method_added_to_the_motion_part(model_i):
     hull, wl = model_i
     omega, beta, u = np.array([3.0, 5.0, 8.0]), np.array([0.0, 0.5]), 0.6
@@ -63,6 +64,7 @@ def test_bad_inputs_are_refused_with_the_parameter_named(model_i):
         S.WithReflection("not a waterline")  # type: ignore[arg-type]
 
 
+@pytest.mark.slow  # default-suite time
 def test_gradient_in_the_speed_equals_central_differences(model_i):
     """On one section table (a plan that moved with U would add the interpolation's own
     change to the differences)."""
