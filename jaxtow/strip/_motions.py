@@ -241,7 +241,7 @@ def solve_motions(
         plan, grid = "table", None
     elif is_concrete(u) and float(u) == 0.0:
         plan, grid = "zero", None  # the frequencies themselves, each table entry exactly
-    elif holds_tracers((hull, omega, beta, u, loading)) or n_frequencies is None:
+    elif holds_tracers((hull, omega, beta, u)) or n_frequencies is None:
         plan, grid = "traced", None
     else:  # a host plan: the grid's size depends on the values
         floor = float(LOW_FREQUENCY * np.sqrt(water.g / float(np.sum(np.asarray(hull.dx)))))
