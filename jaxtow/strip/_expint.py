@@ -34,7 +34,9 @@ _N_ASYMPT = 30
 _FACT = tuple(float(c) for c in np.cumprod(np.r_[1.0, np.arange(1, _N_ASYMPT, dtype=float)]))
 _N_CF = 60
 #: The Horner loops' unroll factor: a trade between compile time (the loop body's size) and
-#: run time (the passes over the array), measured in benchmarks/bench_strip.py.
+#: run time (the passes over the array). On 1.5 million arguments, 2 cores: unrolled in full,
+#: 0.9 s to compile and 0.58 s to run; 1, 5, 10, 30 terms a step: 0.33, 0.38, 0.43, 0.54 s to
+#: compile and 0.65–0.79 s to run (docs/strip.md).
 UNROLL = 5
 
 

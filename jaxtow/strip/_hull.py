@@ -246,15 +246,17 @@ def wigley(
     x, dx = _strips(length, n_stations)
     s = 0.5 * (1.0 - jnp.cos(jnp.linspace(0.0, jnp.pi, n_points)))
     zs = -draft * s
-    xi2 = (2.0 * x / length)[:, None] ** 2
-    zeta2 = (s**2)[None, :]
-    if alpha is None:
-        eta = (1.0 - xi2) * (1.0 - zeta2)
-    else:
-        eta = (1.0 - zeta2) * (1.0 - xi2) * (1.0 + 0.2 * xi2)
-        eta = eta + alpha * zeta2 * (1.0 - zeta2**4) * (1.0 - xi2) ** 4
-    ys = 0.5 * breadth * eta
+    ys = 0.5 * breadth * wigley_form((2.0 * x / length)[:, None] ** 2, (s**2)[None, :], alpha)
     return Hull(x, dx, ys, jnp.tile(zs, (x.shape[0], 1)), "wigley")
+
+
+def wigley_form(xi2, zeta2, alpha=None):
+    """The half-breadth of `wigley` over B/2 at ξ² = (2x/L)² and ζ² = (z/T)² (NumPy or JAX
+    arrays): (1 − ξ²)(1 − ζ²), or with ``alpha`` Journée's form."""
+    if alpha is None:
+        return (1.0 - xi2) * (1.0 - zeta2)
+    eta = (1.0 - zeta2) * (1.0 - xi2) * (1.0 + 0.2 * xi2)
+    return eta + alpha * zeta2 * (1.0 - zeta2**4) * (1.0 - xi2) ** 4
 
 
 def resample_contour(y, z, n_points: int):

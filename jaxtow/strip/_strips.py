@@ -16,7 +16,7 @@ from jaxtyping import Array, Complex, Float
 
 from .._units import SEA_WATER, Water
 from ..drift import Waterline, waterline
-from ._hull import Hull, wigley
+from ._hull import Hull, wigley, wigley_form
 from ._sections import panels, section_coefficients
 
 __all__ = [
@@ -258,7 +258,7 @@ def wigley_waterline(
     coefficient of the strips of ``n_stations`` (∇/(LBT) of `hydrostatics`). NumPy on the
     host (numbers, not traced)."""
     xi = np.linspace(1.0, -1.0, int(n_points))
-    eta = 1.0 - xi**2 if alpha is None else (1.0 - xi**2) * (1.0 + 0.2 * xi**2)
+    eta = wigley_form(xi**2, 0.0, None if alpha is None else float(alpha))
     half = np.stack([0.5 * float(length) * xi, 0.5 * float(breadth) * eta], axis=1)
     half[[0, -1], 1] = 0.0
     points = np.concatenate([half, half[-2::-1] * np.array([1.0, -1.0])])
