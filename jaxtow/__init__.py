@@ -83,6 +83,7 @@ if TYPE_CHECKING:
         equilibria as equilibria,
         equilibria_fixed as equilibria_fixed,
         heading_residual as heading_residual,
+        padded_equilibria as padded_equilibria,
         straight_behind as straight_behind,
     )
     from ._interrupt import sticky_interrupts as sticky_interrupts

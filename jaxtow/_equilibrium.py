@@ -33,7 +33,7 @@ import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
 from ._dynamics import TowModel, force_breakdown, vector_field
-from ._roots import bisect, brackets, polish
+from ._roots import bisect_fixed, brackets, polish
 from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._towline import Towline
 from .forces._base import NoExternalForce
@@ -195,21 +195,25 @@ def bisection_atol(dtype) -> float:
     return max(1e-13, 16.0 * float(jnp.finfo(dtype).eps))
 
 
-def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, max_steps: int):
+def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, steps: int, enough: bool):
     """Root of F on [lo, hi] (where F takes the values ``f_lo``, ``f_hi``) to machine
-    precision: bisection, then a two-step Newton polish (`jaxtow._roots`)."""
-    psi, ok = bisect(
-        _residual,
-        lo,
-        hi,
-        model,
-        atol=bisection_atol(jnp.result_type(lo)),
-        max_steps=max_steps,
-        f_lo=f_lo,
-        f_hi=f_hi,
-    )
-    psi = polish(_residual, psi, model, steps=2, lower=lo, upper=hi)
-    return jnp.where(exact, lo, psi), ok | exact
+    precision: ``steps`` halvings of the bracket (`jaxtow._roots.bisect_fixed`: F traced
+    once, no solver), then a two-step Newton polish (`jaxtow._roots.polish`), which also
+    carries the derivative (at a root a Newton step's derivative with respect to the
+    parameters is the implicit one, whatever the bisection's). ``enough``: whether the
+    halvings reach the bisection tolerance (else the root is not ``converged``)."""
+    sign = jnp.where(f_lo < 0, 1.0, -1.0)  # sign * F rises through the bracket
+    a, b = bisect_fixed(lambda x: sign * _residual(x, model) >= 0, lo, hi, steps)
+    psi = polish(_residual, 0.5 * (a + b), model, steps=2, lower=lo, upper=hi)
+    bracketed = (f_lo < 0) != (f_hi < 0)
+    return jnp.where(exact, lo, psi), (bracketed & enough) | exact
+
+
+def bisection_steps(width: float, dtype, max_steps: int) -> tuple[int, bool]:
+    """(halvings of a bracket of ``width`` down to `bisection_atol`, at most ``max_steps``;
+    whether that many reach it)."""
+    need = max(1, math.ceil(math.log2(width / bisection_atol(dtype))))
+    return min(need, max_steps), need <= max_steps
 
 
 def _scan_residual(grid, model: TowModel):
@@ -256,8 +260,9 @@ def equilibria_fixed(
     # drift integral, say) would otherwise materialise n_grid copies of its intermediates
     F = _scan_residual(grid, model)
     idx, found, exact, count = brackets(F, max_roots)
-    psi, ok = jax.vmap(_refine, in_axes=(0, 0, 0, 0, 0, None, None))(
-        grid[idx], grid[idx + 1], F[idx], F[idx + 1], exact, model, max_steps
+    steps, enough = bisection_steps(2 * psi_range / (n_grid - 1), grid.dtype, max_steps)
+    psi, ok = jax.vmap(_refine, in_axes=(0, 0, 0, 0, 0, None, None, None))(
+        grid[idx], grid[idx + 1], F[idx], F[idx + 1], exact, model, steps, enough
     )
     eqs = _finish(psi, found, ok & (count > 0), model, count)
     return guard(eqs, model.checks()) if throw else eqs
@@ -271,6 +276,17 @@ def equilibria(
     Parameters are checked (a clear error names any invalid one). See `equilibria_fixed`
     for the jittable form used inside sweeps.
     """
+    return padded_equilibria(
+        model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range
+    ).compact()
+
+
+def padded_equilibria(
+    model: TowModel, *, n_grid: int = 2001, max_roots: int = 8, psi_range: float = math.pi / 2
+) -> Equilibria:
+    """`equilibria` before its padding slots are dropped: ``max_roots`` slots, ``found``
+    marking the roots, so that a program run on the states downstream (their stability,
+    say) has one shape whatever the number of equilibria, and is traced and compiled once."""
     check_now(model)  # a clear error here rather than from inside the compiled call
     # the compiled call checks only what check_now could not see (a traced model, when
     # called under a user's jit): a program with run-time checks holds host callbacks,
@@ -282,7 +298,7 @@ def equilibria(
         raise ValueError(
             f"{int(eqs.n_roots)} equilibria found but max_roots={max_roots}; raise max_roots"
         )
-    return eqs.compact()
+    return eqs
 
 
 _equilibria_jit = jax.jit(

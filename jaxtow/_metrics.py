@@ -12,12 +12,14 @@ from __future__ import annotations
 import dataclasses
 import math
 
+import equinox as eqx
 import jax
 import jax.numpy as jnp
 import numpy as np
 
 from ._dynamics import ForceBreakdown, TowModel, force_breakdown, sway_offset
 from ._equilibrium import equilibria as find_equilibria
+from ._rules import check_now
 
 
 @dataclasses.dataclass(frozen=True)
@@ -107,10 +109,18 @@ def force_history(model: TowModel, sim) -> ForceHistory:
     """The force breakdown (manoeuvring, towline, coupling, external; each (n, 3)) and the
     tension along a run (thesis fig. 7.6)."""
     ok = np.asarray(sim.valid)
-    ys = jnp.asarray(np.asarray(sim.ys)[ok])
-    ts = jnp.asarray(np.asarray(sim.ts)[ok])
-    fb = jax.vmap(lambda t, y: force_breakdown(t, y, model))(ts, ys)
-    return ForceHistory(t=np.asarray(ts), forces=jax.tree_util.tree_map(np.asarray, fb))
+    check_now(model)  # checked here, then one compiled program over the whole save grid
+    fb = _force_history(model, jnp.asarray(sim.ts), jnp.asarray(sim.ys))
+    return ForceHistory(
+        t=np.asarray(sim.ts)[ok], forces=jax.tree_util.tree_map(lambda a: np.asarray(a)[ok], fb)
+    )
+
+
+@eqx.filter_jit
+def _force_history(model, ts, ys):
+    """The force breakdown at every saved state (the rows after a failed run, inf, are
+    dropped by the caller), without run-time checks: one shape per save grid."""
+    return jax.vmap(lambda t, y: force_breakdown(t, y, model, throw=False))(ts, ys)
 
 
 def _extrema(t, x):

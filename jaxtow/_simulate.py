@@ -67,8 +67,18 @@ def _solver(name: str):
 
 def choose_solver(model: TowModel, y0, t1: float, t0: float = 0.0) -> str:
     """'tsit5' or 'kvaerno5' from the stiffness estimate described in the module docstring."""
-    lam = np.asarray(eigenvalues(model, jnp.asarray(y0)))
+    if holds_tracers(model):
+        lam = eigenvalues(model, jnp.asarray(y0))
+    else:  # checked here, then one compiled program (the Jacobian traced once per model type)
+        check_now(model)
+        lam = _eigenvalues_program(model, jnp.asarray(y0))
+    lam = np.asarray(lam)
     return "kvaerno5" if float(np.max(np.abs(lam))) * (t1 - t0) > STIFF_THRESHOLD else "tsit5"
+
+
+@eqx.filter_jit
+def _eigenvalues_program(model, y):
+    return eigenvalues(model, y, throw=False)
 
 
 class Integration(eqx.Module):

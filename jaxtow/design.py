@@ -434,9 +434,20 @@ def _abscissa_of(model: TowModel, name: str, value):
     return max_real_eigenvalue(m, y, throw=False), ok
 
 
-@functools.partial(jax.jit, static_argnames=("name",))
-def _scan_abscissa(model: TowModel, name: str, values):
-    return jax.vmap(lambda v: _abscissa_of(model, name, v))(values)
+@functools.partial(jax.jit, static_argnames=("names",))
+def _scan_abscissa(model: TowModel, names: tuple[str, ...], which, values):
+    """(max Re λ', converged) with parameter ``names[which]`` set to each of ``values``:
+    the index is an argument, so the scans of every name in ``names`` are one program
+    (traced and compiled once), each setting the others to their present values."""
+
+    def one(v):
+        present = [jnp.asarray(get_parameter(model, n), float) for n in names]
+        new = {n: jnp.where(which == i, v, p) for i, (n, p) in enumerate(zip(names, present))}
+        m = with_parameters(model, **new)
+        y, _, ok = straight_equilibrium(m)
+        return max_real_eigenvalue(m, y, throw=False), ok
+
+    return jax.vmap(one)(values)
 
 
 def stable_value(
@@ -447,6 +458,7 @@ def stable_value(
     *,
     n: int = 17,
     margin: float = ADVICE_MARGIN,
+    among: tuple[str, ...] | None = None,
 ) -> StableValue | None:
     """The value of parameter ``name`` in [lo, hi] nearest its present one at which the
     straight-behind equilibrium is stable with max Re λ' = −``margin``: the smallest change
@@ -456,11 +468,18 @@ def stable_value(
     margin; the one nearest the present value is refined by Newton's method with the
     derivative of the abscissa by autodiff through the equilibrium (implicit function
     theorem) and the eigenvalues. Returns a `StableValue`, or None when no value in the
-    range makes the tow stable."""
+    range makes the tow stable.
+
+    ``among``: the scalar parameters whose scans share one compiled program (``name``
+    among them; default ``name`` alone), for a caller that asks for several in turn."""
     present = float(get_parameter(model, name))
     grid = np.linspace(lo, hi, n)
     check_values(model, name, grid)
-    a, ok = (np.asarray(x) for x in _scan_abscissa(model, name, jnp.asarray(grid)))
+    names = (name,) if among is None else tuple(among)
+    if name not in names:
+        raise ValueError(f"parameter 'among' must hold {name!r}, got {names}")
+    scan = _scan_abscissa(model, names, names.index(name), jnp.asarray(grid))
+    a, ok = (np.asarray(x) for x in scan)
     g = np.where(ok, a + margin, np.nan)
     cross = [
         i

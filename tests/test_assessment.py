@@ -416,8 +416,12 @@ def test_tension_equals_pull_for_user_tows_with_current_and_a_bridle(which):
 #: 1156, then 1017 once the sweep kernel's validity flags were unchecked, then 863 once each
 #: condition's stability and validity ran as one compiled program instead of eagerly, then
 #: 856 once the model at another tug speed kept its towline's scalars weakly typed (a new
-#: argument type to every kernel before).
-STUDY_COMPILES = 856
+#: argument type to every kernel before), then 127 once the required pull, its worst Tp,
+#: the hull's mean drift and the advice's re-checks ran as compiled programs instead of
+#: eager operations, the advice's scans shared one program, the stability of every
+#: condition ran on the fixed-size set of equilibria (one shape) and the resistance
+#: programs took the sea state without its (static) name.
+STUDY_COMPILES = 127
 
 
 class count_compiles:

@@ -368,6 +368,7 @@ def test_qtf_output_cache_and_attributes(box_db, tmp_path):
         bem.qtf_from_bem(ds, "pinkster")
 
 
+@pytest.mark.slow  # the default suite's wall time (2 cores)
 @needs_capytaine
 def test_cli_bem_writes_qtf_databases_and_figures(tmp_path, capsys):
     import xarray as xr

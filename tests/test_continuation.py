@@ -169,6 +169,7 @@ def test_bad_inputs(barge_2b):
         ct.equilibrium_branch(m, lambda mm, p: mm, p_range=(0.0, 1.0))
 
 
+@pytest.mark.slow  # the default suite's wall time (2 cores)
 def test_cli_bifurcation(tmp_path):
     import json
 

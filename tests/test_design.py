@@ -146,6 +146,7 @@ def test_smoothing_at_an_eigenvalue_crossing(model_2a):
         assert e <= s <= e + D.SMOOTHING * math.log(6) + 1e-15
 
 
+@pytest.mark.slow  # the default suite's wall time (2 cores)
 def test_optimiser_beats_grid_with_far_fewer_evaluations_and_stabilises_2a(model_2a):
     """Bridle attachment (x_p', y_p') for Barge 2a at l0' = 1 in calm water, |psi_eq| <= 10 deg."""
     r = D.optimise_towline(model_2a, variables=("xp", "yp"), x0=dict(xp=0.5, yp=0.02))

@@ -78,6 +78,7 @@ def test_calm_water_runs_settle_or_fishtail(vessel, expected):
         assert np.min(r.yaw_amplitude) > 20.0 and r.confidence_interval[0] > 0.6
 
 
+@pytest.mark.slow  # the default suite's wall time (2 cores)
 def test_a_tiny_sea_settles_like_calm_water():
     """Hs → 0: Barge 2b in a 5 cm sea stays within a fraction of a degree of the calm
     equilibrium, and its tension at the static value."""

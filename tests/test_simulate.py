@@ -209,7 +209,9 @@ def test_trajectory_geometry_and_forces(barge_2a):
     fh = force_history(m, sim)
     dy = np.asarray(jt.vector_field(0.0, jnp.asarray(sim.ys[10]), m))
     tot = sum(getattr(fh.forces, k)[10] for k in ("manoeuvring", "towline", "coupling", "external"))
-    np.testing.assert_allclose(tot / fh.forces.inertia[10], dy[:3], rtol=1e-12)
+    # the history is one compiled program, the vector field here eager: their round-off
+    # differs (3.7e-12 relative, 1.8e-14 absolute, measured), far below any physics
+    np.testing.assert_allclose(tot / fh.forces.inertia[10], dy[:3], rtol=1e-10, atol=1e-13)
 
 
 def test_batch_equals_single_runs_and_modes_agree(barge_2b):

@@ -137,10 +137,27 @@ def wave_drift_damping(
 def damping_matrix(q, omega, beta, *, g: float = G):
     """`wave_drift_damping` without the eager heading check: for the tow model's forces,
     which flag a heading outside the table (``heading_in_table``) instead of refusing it."""
-    col_u = _velocity_column(q, omega, beta, g, "u")
-    col_v = _velocity_column(q, omega, beta, g, "v")
-    col_r = yaw_rate_damping(q, omega, beta, g=g).astype(col_u.dtype)
-    return jnp.stack([col_u, col_v, col_r], axis=-1)
+    return drift_and_damping(q, omega, beta, g=g)[1]
+
+
+def drift_and_damping(q, omega, beta, *, g: float = G):
+    """(F(ω, β), B(ω, β)): the zero-speed drift and `damping_matrix` from one table look-up.
+    Aranha's finite form is differentiated at U = 0 along u and v in one forward pass (the
+    two tangents share the primal, which is F itself), for the forces and, where the table
+    has them, the sectional moments (`QTF.forces_and_moments`), whose sway derivative is the
+    yaw-rate column (`yaw_rate_damping`)."""
+    sectional = bool(getattr(q, "has_sectional", False))
+    table = q.forces_and_moments if sectional else q
+
+    def f(x):
+        return aranha(table, omega, beta, x[0], x[1], g=g)
+
+    zero = jnp.zeros(2, dtype=float)
+    value, jac = jax.vmap(lambda t: jax.jvp(f, (zero,), (t,)), out_axes=(None, -1))(
+        jnp.eye(2, dtype=float)
+    )
+    col_r = jac[3:, 1] if sectional else jnp.zeros(3, dtype=jac.dtype)
+    return value[:3], jnp.concatenate([jac[:3], col_r[:, None]], axis=-1)
 
 
 def sailing_validity(

@@ -263,6 +263,14 @@ class QTF(eqx.Module):
             return jnp.zeros(3, dtype=jnp.result_type(self.values.dtype, omega, beta))
         return self._interpolate(self.sectional, omega, beta)
 
+    def forces_and_moments(self, omega, beta) -> Float[Array, "6"]:
+        """(Fx, Fy, Nz, M_x,1, M_y,1, M_y,2) per ζa² at one (ω, β): the forces and the
+        sectional moments from one look-up (the moments zero without them)."""
+        if self.sectional is None:
+            f = self(omega, beta)
+            return jnp.concatenate([f, jnp.zeros_like(f)])
+        return self._interpolate(jnp.concatenate([self.values, self.sectional]), omega, beta)
+
     def _interpolate(self, values, omega, beta):
         beta = jnp.asarray(beta)
         if self.periodic:

@@ -11,7 +11,12 @@ from jaxtyping import Array, ArrayLike, Float
 from .._rules import guard, is_concrete
 from .._units import G
 from ..waves._irregular import mean_drift
-from ._damping import aranha, damping_matrix, encounter_frequency, yaw_rate_damping
+from ._damping import (
+    aranha,
+    drift_and_damping,
+    encounter_frequency,
+    yaw_rate_damping,
+)
 from ._qtf import QTF
 
 #: The forward-speed forms of `sailing_drift`.
@@ -71,17 +76,18 @@ def sailing_drift(
         F = q(omega0, beta)
     elif form == "thesis":
         we = encounter_frequency(omega0, beta, u, v, g=g)
-        B = damping_matrix(q, we, beta, g=g)
+        F0, B = drift_and_damping(q, we, beta, g=g)
         if not yaw_rate:
             B = B.at[:, 2].set(0.0)
-        F = q(we, beta) + B @ jnp.stack([u, v, r])
+        F = F0 + B @ jnp.stack([u, v, r])
+    elif form == "linear":
+        F0, B = drift_and_damping(q, omega0, beta, g=g)
+        if not yaw_rate:
+            B = B.at[:, 2].set(0.0)
+        F = F0 + B @ jnp.stack([u, v, r])
     else:
         col_r = yaw_rate_damping(q, omega0, beta, g=g) if yaw_rate else jnp.zeros(3)
-        if form == "linear":
-            B = damping_matrix(q, omega0, beta, g=g)
-            F = q(omega0, beta) + B[:, :2] @ jnp.stack([u, v]) + col_r * r
-        else:
-            F = aranha(q, omega0, beta, u, v, g=g) + col_r * r
+        F = aranha(q, omega0, beta, u, v, g=g) + col_r * r
     if not throw:
         return F
     we = encounter_frequency(omega0, beta, u, v, g=g)
@@ -126,7 +132,15 @@ def irregular_sailing_drift(
     out = mean_drift(omega, S, F)
     if not throw:
         return out
+    return guard(out, [overtaken_check(omega, S, beta, u, v, g=g)])
+
+
+def overtaken_check(omega, S, beta, u, v=0.0, *, g: float = G):
+    """The check `irregular_sailing_drift` makes with ``throw=True``: (a sea the vessel
+    partly outruns, its message), the first a frequency carrying more than 0.1 % of the peak
+    spectral density with encounter frequency ≤ 0."""
+    omega, S = jnp.asarray(omega), jnp.asarray(S)
     over = encounter_frequency(omega, beta, u, v, g=g) <= 0
     significant = jnp.any(over & (S > 1e-3 * jnp.max(S)))
     share = jnp.sum(jnp.where(over, S, 0.0)) / jnp.maximum(jnp.sum(S), 1e-300)
-    return guard(out, [(significant, _overtaken_message(share, "share of the sea's m0"))])
+    return significant, _overtaken_message(share, "share of the sea's m0")

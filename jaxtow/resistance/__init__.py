@@ -57,6 +57,7 @@ if TYPE_CHECKING:
         resistance as resistance,
         resistance_grid as resistance_grid,
         tow_resistance as tow_resistance,
+        worst_bollard_pull as worst_bollard_pull,
     )
     from ._flow import (
         RHO_AIR as RHO_AIR,

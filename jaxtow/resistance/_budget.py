@@ -7,7 +7,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
-from .._rules import FINITE, NONNEGATIVE, POSITIVE, check_now, guard, is_concrete
+from .._rules import FINITE, NONNEGATIVE, POSITIVE, check_now, guard, holds_tracers, is_concrete
 from .._units import RHO_SEA, froude_number
 from .._vessel import Vessel
 from ..drift import (
@@ -269,15 +269,55 @@ def required_pull(
                     f"{float(np.max(tug.free_speed)):g} m/s (where its pull vanishes), got "
                     f"{speed!r}"
                 )
-    b = resistance(tow, sea, speed, heading=heading, tug=tug, throw=False)
-    total = b.total
-    bp = total if tug is None else total / (tug.efficiency * tug.shape(b.speed))
+    if not holds_tracers((tow, sea, speed, heading, tug)):
+        # everything checked above: one compiled program, no run-time check (a host
+        # callback would keep it out of the persistent compilation cache)
+        return _pull_program(tow, sea.unnamed(), speed, heading, tug)
+    out = _pull(tow, sea, speed, heading, tug)
     checks = [NONNEGATIVE.traced("speed", speed), FINITE.traced("heading", heading)]
     checks += sea.checks() + (tug.checks() if tug is not None else [])
     if tug is not None:
         below = jnp.any(jnp.asarray(speed) >= tug.free_speed)
         checks.append((below, "parameter 'speed' must be below the tug's free speed"))
-    return guard(PullRequirement(towing_force=total, bollard_pull=bp, budget=b), checks)
+    return guard(out, checks)
+
+
+def _pull(tow, sea, speed, heading, tug) -> PullRequirement:
+    b = resistance(tow, sea, speed, heading=heading, tug=tug, throw=False)
+    total = b.total
+    bp = total if tug is None else total / (tug.efficiency * tug.shape(b.speed))
+    return PullRequirement(towing_force=total, bollard_pull=bp, budget=b)
+
+
+_pull_program = eqx.filter_jit(_pull)
+
+
+def worst_bollard_pull(
+    tow: TowResistance, sea: SeaState, tps, *, heading=0.0, tug: Tug | None = None
+):
+    """`required_pull`'s bollard pull at zero speed over the peak periods ``tps`` [s] (the
+    sea state's own Tp replaced), as one compiled program where everything is concrete."""
+    POSITIVE.check("tps", tps)
+    FINITE.check("heading", heading)
+    check_now(sea)
+    if tug is not None:
+        check_now(tug)
+        POSITIVE.check("bollard_pull", tug.bollard_pull)
+    if holds_tracers((tow, sea, tps, heading, tug)):
+        return _pulls_over_tp(tow, sea, tps, heading, tug)
+    return _pulls_over_tp_program(tow, sea.unnamed(), tps, heading, tug)
+
+
+def _pulls_over_tp(tow, sea, tps, heading, tug):
+    tps = jnp.asarray(tps, float)
+
+    def one(t):
+        return _pull(tow, eqx.tree_at(lambda s: s.tp, sea, t), 0.0, heading, tug).bollard_pull
+
+    return jax.vmap(one)(tps)
+
+
+_pulls_over_tp_program = eqx.filter_jit(_pulls_over_tp)
 
 
 def resistance_grid(
@@ -288,7 +328,7 @@ def resistance_grid(
     compiled call (under a caller's tracing, on its result)."""
     NONNEGATIVE.check("speeds", speeds)
     POSITIVE.check("tps", tps)
-    out = _resistance_grid(tow, sea, speeds, tps, heading=heading, tug=tug)
+    out = _resistance_grid(tow, sea.unnamed(), speeds, tps, heading=heading, tug=tug)
     return guard(out, [NONNEGATIVE.traced("speeds", speeds), POSITIVE.traced("tps", tps)])
 
 

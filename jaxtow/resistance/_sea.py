@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import equinox as eqx
 import jax.numpy as jnp
 
@@ -32,3 +34,9 @@ class SeaState(Checked):
     wind_angle: jnp.ndarray = rule_field(rule=FINITE, converter=_float, default=0.0)
     current_angle: jnp.ndarray = rule_field(rule=FINITE, converter=_float, default=0.0)
     name: str = eqx.field(static=True, default="")
+
+    def unnamed(self) -> SeaState:
+        """The same sea without its name, as the compiled programs take it: the name is
+        static, so each named sea state would be a new argument type to every kernel (a
+        new trace and compile of each)."""
+        return dataclasses.replace(self, name="") if self.name else self

@@ -149,7 +149,9 @@ def operating_speed(
         raise ValueError(
             f"parameter 'n_scan' must be a whole number of speeds >= 2, got {n_scan!r}"
         )
-    p = _operating_point(tow, tug, sea, jnp.asarray(heading, float), int(n_scan), float(rtol))
+    p = _operating_point(
+        tow, tug, sea.unnamed(), jnp.asarray(heading, float), int(n_scan), float(rtol)
+    )
     if not throw:
         return p
     if not p.result.is_traced():

@@ -26,9 +26,10 @@ from .. import design, guidelines, presets
 from .._equilibrium import equilibria, straight_behind
 from .._parameters import get_parameter, with_parameters
 from .._roots import bisect, bisect_fixed
-from .._stability import STABLE, stability
+from .._stability import STABLE
 from .._towline import CatenaryTowline, CompositeTowline
 from .._units import KNOT, TONNE_FORCE
+from ._conditions import equilibria_and_stability
 from ._records import AdviceRow, StudySummary
 
 __all__ = ["ADVICE_RANGES", "yaw_advice", "skeg_advice", "seabed_advice", "tug_advice", "advice"]
@@ -75,8 +76,8 @@ def _tow_file(name: str, value: float, scales) -> str:
 
 def _follows(model) -> bool:
     """The full check at a suggested value: a straight-behind equilibrium that is stable."""
-    eqs = equilibria(model)
-    st = np.asarray(stability(model, eqs.state).stability)
+    eqs, st, _, _ = equilibria_and_stability(model)
+    st = st.stability
     ok = np.asarray(eqs.valid)
     return bool(np.any(straight_behind(np.asarray(eqs.psi), ok) & ok & (st == STABLE)))
 
@@ -90,13 +91,13 @@ def yaw_advice(model, condition: str) -> list[AdviceRow]:
     scales = model.reference_scales
     rate = float(scales.u_tug) / scales.length
     out = []
-    for name, (kind, a, b) in ADVICE_RANGES.items():
-        present = np.asarray(get_parameter(model, name))
-        if present.ndim != 0:  # a composite line's EA: per segment, no one number to change
-            continue
-        p = float(present)
+    # a composite line's EA is per segment: no one number to change
+    names = tuple(n for n in ADVICE_RANGES if np.ndim(get_parameter(model, n)) == 0)
+    for name in names:
+        kind, a, b = ADVICE_RANGES[name]
+        p = float(get_parameter(model, name))
         lo, hi = (a * p, b * p) if kind == "relative" else (a, b)
-        found = design.stable_value(model, name, lo, hi)
+        found = design.stable_value(model, name, lo, hi, among=names)
         row = dict(
             condition=condition,
             kind="change",

@@ -13,6 +13,7 @@ import math
 import sys
 import time
 
+import equinox as eqx
 import jax
 import jax.numpy as jnp
 import msgspec
@@ -28,6 +29,7 @@ from .._rules import ParameterError
 from .._simulate import initial_state, simulate
 from .._units import RHO_SEA, G
 from ..drift import irregular_sailing_drift
+from ..drift._sailing import overtaken_check
 from ..waves import DEFAULT_OMEGA, Jonswap
 from ._advice import advice
 from ._conditions import condition, sea_conditions
@@ -345,33 +347,53 @@ def _hull_drift(tow) -> tuple[DriftRecord, tuple]:
     """The head-sea surge drift of the hull against the short-wave wall limit, and the
     mean drift in each sea state at rest and at the design speed (no model needed)."""
     q = tow.drift.qtf()
-    w = np.asarray(q.omega)
-    fx = np.asarray(jax.vmap(lambda x: q(x, 0.0))(jnp.asarray(w))[:, 0])
-    wall = 0.5 * RHO_SEA * G * tow.breadth  # Faltinsen's wall-sided short-wave limit ½ρgB
-    rows = []
-    for s in tow.sea_states:
-        if float(s.hs) <= 0:
-            continue
-        S = Jonswap(hs=s.hs, tp=s.tp, gamma=s.gamma)(DEFAULT_OMEGA)
-        fx_at = [
-            float(
-                irregular_sailing_drift(q, DEFAULT_OMEGA, S, s.wave_angle, u, 0.0, form=tow.form)[0]
-            )
-            for u in (0.0, float(tow.scales.u_tug))
-        ]
-        rows.append(
-            MeanDriftRow(
-                sea_state=s.name,
-                hs=float(s.hs),
-                tp=float(s.tp),
-                fx_stationary=fx_at[0],
-                fx_design_speed=fx_at[1],
-            )
+    seas = [s for s in tow.sea_states if float(s.hs) > 0]
+    spectra = (
+        np.stack(
+            [np.asarray(Jonswap(hs=s.hs, tp=s.tp, gamma=s.gamma)(DEFAULT_OMEGA)) for s in seas]
         )
+        if seas
+        else np.zeros((0, DEFAULT_OMEGA.shape[0]))
+    )
+    angles = np.array([float(s.wave_angle) for s in seas])
+    speeds = np.array([0.0, float(tow.scales.u_tug)])
+    fx, drift, over = jax.device_get(_drift_program(q, spectra, angles, speeds, form=tow.form))
+    for k, s in enumerate(seas):  # the check irregular_sailing_drift makes eagerly
+        for j, u in enumerate(speeds):
+            if over[k, j]:
+                _, msg = overtaken_check(DEFAULT_OMEGA, spectra[k], angles[k], u)
+                raise ValueError(f"sea state {s.name!r}: {msg}")
+    rows = [
+        MeanDriftRow(
+            sea_state=s.name,
+            hs=float(s.hs),
+            tp=float(s.tp),
+            fx_stationary=float(drift[k, 0]),
+            fx_design_speed=float(drift[k, 1]),
+        )
+        for k, s in enumerate(seas)
+    ]
+    wall = 0.5 * RHO_SEA * G * tow.breadth  # Faltinsen's wall-sided short-wave limit ½ρgB
     record = DriftRecord(
         source=tow.drift.describe(), wall_limit_ratio=float(-fx[-1] / wall), mean_drift=rows
     )
-    return record, (w, fx)
+    return record, (np.asarray(q.omega), fx)
+
+
+@eqx.filter_jit
+def _drift_program(q, spectra, angles, speeds, *, form):
+    """`_hull_drift`'s numbers as one compiled program: the head-sea surge drift on the
+    table's frequencies, and the mean surge drift (and whether the sea is partly overtaken)
+    of each sea state (rows) at each speed (columns)."""
+    fx = jax.vmap(lambda x: q(x, 0.0))(q.omega)[:, 0]
+
+    def one(S, angle, u):
+        F = irregular_sailing_drift(q, DEFAULT_OMEGA, S, angle, u, 0.0, form=form, throw=False)
+        return F[0], overtaken_check(DEFAULT_OMEGA, S, angle, u)[0]
+
+    per_speed = jax.vmap(one, in_axes=(None, None, 0))
+    drift, over = jax.vmap(per_speed, in_axes=(0, 0, None))(spectra, angles, speeds)
+    return fx, drift, over
 
 
 def _model_steps(tow, seas, speeds, steps: Steps, parts: dict, extra: dict) -> None:

@@ -11,7 +11,7 @@ import msgspec
 import numpy as np
 
 from .._dynamics import all_valid, at_tug_speed, validity
-from .._equilibrium import equilibria, straight_behind
+from .._equilibrium import padded_equilibria, straight_behind
 from .._stability import MARGINAL, STABILITY_LABELS, STABLE, stability
 from ._records import Bounds, Condition, EquilibriumRow
 
@@ -78,7 +78,7 @@ def yaw_verdict(psi, max_real, found, stab_codes) -> str:
 
 
 @eqx.filter_jit
-def _stability_and_validity(model, states):
+def stability_and_validity(model, states):
     """Stability and the validity flags of ``states`` as one compiled program: run eagerly,
     their hundreds of operations are dispatched one by one on every run, cached or not. The
     model's parameters were checked by `equilibria` before, so the program holds no run-time
@@ -88,11 +88,26 @@ def _stability_and_validity(model, states):
     return st, flags, jax.vmap(all_valid)(flags)
 
 
+def equilibria_and_stability(model):
+    """(equilibria, their stability, validity flags, all valid) of ``model``, the found
+    roots only (NumPy arrays). The stability program runs on every slot of the fixed-size
+    set (`jaxtow.padded_equilibria`): one shape, one program, whatever the number of roots.
+    The model's parameters are checked first (a clear error names a bad one)."""
+    fixed = padded_equilibria(model)
+    st, flags, ok = jax.device_get(stability_and_validity(model, fixed.state))
+    keep = np.asarray(fixed.found)
+    return (
+        fixed.select(keep),
+        jax.tree.map(lambda a: np.asarray(a)[keep], st),
+        {k: np.asarray(v)[keep] for k, v in flags.items()},
+        np.asarray(ok)[keep],
+    )
+
+
 def condition(model, name: str, kind: str, sea=None) -> Condition:
     """The `Condition` of ``model``: every equilibrium, its stability and validity, and the
     verdict."""
-    eqs = equilibria(model)  # checks the model's parameters (a clear error names a bad one)
-    st, flags, ok = jax.device_get(_stability_and_validity(model, eqs.state))
+    eqs, st, flags, ok = equilibria_and_stability(model)
     sc = model.reference_scales
     force, rate = float(sc.force), float(sc.u_tug) / sc.length
     found = np.asarray(eqs.valid)

@@ -7,8 +7,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import cached_property
 
-import equinox as eqx
-import jax
 import jax.numpy as jnp
 import numpy as np
 
@@ -68,21 +66,14 @@ def evaluate_resistance(tow, tug, sea, heading, route_length, *, n_tp: int = 41)
 
 def worst_over_tp(tow, sea, *, heading=0.0, tug=None, n_tp: int = 41) -> tuple[float, float]:
     """(required bollard pull [N], the Tp [s] it needs) at zero speed, the worst over the
-    physical Tp range of the sea state's Hs (thesis eq. 3.5), in one vmapped call; without a
-    ``tug`` the pull is the towing force."""
+    physical Tp range of the sea state's Hs (thesis eq. 3.5), in one compiled call
+    (`jaxtow.resistance.worst_bollard_pull`); without a ``tug`` the pull is the towing
+    force."""
     lo, hi = (float(t) for t in physical_tp_range(float(sea.hs)))
-    tps = jnp.linspace(lo, hi, n_tp)
-    bp = jax.vmap(
-        lambda t: (
-            resistance.required_pull(tow, eqx_tp(sea, t), heading=heading, tug=tug).bollard_pull
-        )
-    )(tps)
-    k = int(jnp.argmax(bp))
+    tps = np.linspace(lo, hi, n_tp)
+    bp = np.asarray(resistance.worst_bollard_pull(tow, sea, tps, heading=heading, tug=tug))
+    k = int(np.argmax(bp))
     return float(bp[k]), float(tps[k])
-
-
-def eqx_tp(sea, tp):
-    return eqx.tree_at(lambda s: s.tp, sea, tp)
 
 
 #: The columns of `resistance_table`.
