@@ -14,7 +14,9 @@ beside that code's own figures) are recomputed by `jaxtow.strip` at the same poi
   λ/L grid of 0.7-2.5 in steps of 0.025, by Gerritsma-Beukelman, by the far field, and by
   Gerritsma-Beukelman with the bow's short-wave reflection (`strip.WithReflection`: jaxtow's
   `drift.liu` on the Wigley waterline); beside it, as a check of that reflection part, the
-  head-sea reflection of Liu & Papanikolaou's own form (`wedge_reflection`: a wedge bow).
+  head-sea reflection of Liu & Papanikolaou's own form (`wedge_reflection`: a wedge bow), and
+  their whole semi-empirical method (`liu_papanikolaou_motion` plus that wedge), a method
+  the ITTC lists for speed trials.
 
 Head seas, fresh water (ρ = 1000 kg/m³), k_yy = 0.25 L, G on the waterline. Writes
 ``benchmarks/data/strip/journee1992_compared.json`` and, with ``--docs``, the tables into
@@ -154,8 +156,12 @@ def resistance_peaks(data):
             row[f"jaxtow_{key}_at"] = float(PEAK_GRID[i])
             if key == "gb":
                 gb = raw
-        wedge = gb + wedge_reflection(L, m["breadth"], data["draft"], wl, fn, PEAK_GRID) / scale
-        row["check_gb_wedge"] = float(np.max(wedge))
+        reflection = wedge_reflection(L, m["breadth"], data["draft"], wl, fn, PEAK_GRID) / scale
+        row["check_gb_wedge"] = float(np.max(gb + reflection))
+        motion = liu_papanikolaou_motion(
+            L, m["breadth"], data["draft"], float(wl.block_coefficient), fn, PEAK_GRID
+        )
+        row["check_liu_papanikolaou"] = float(np.max(motion + reflection))
         out.append(row)
     return out
 
@@ -180,6 +186,35 @@ def wedge_reflection(L, B, T, wl, fn, lam_over_l):
     cb = float(wl.block_coefficient)
     factor = (0.87 / cb) ** (1 + 4 * np.sqrt(fn))
     return 2.25 / 2 * RHO * G * B * alpha_t * np.sin(e) ** 2 * (1 + 2 * omega * u / G) * factor
+
+
+def liu_papanikolaou_motion(L, B, T, cb, fn, lam_over_l, k_yy=0.25):
+    """A check, not a jaxtow method: the motion part of Liu & Papanikolaou's (2020)
+    semi-empirical added resistance in head seas (even keel), R_AWM/(ρgζa²B²/L) =
+    4 a1 a2 ω̄^b1 exp((b1/d1)(1 − ω̄^d1)), as their formula is written in a public
+    implementation (we could not read the paper itself), with
+
+        a1 = 60.3 C_B^1.34 (4 k_yy)² (0.87/C_B)^(1 + Fn) / ln(B/T),
+        a2 = Fn^1.5 exp(−3.5 Fn) (Fn ≥ 0.12),
+        ω̄ = 2.142 k_yy^(1/3) √(L/λ) [1 − (0.111/C_B)(ln(B/T) − ln 2.75)] (C_B/0.65)^0.17
+             [−1.377 Fn² + 1.157 Fn + 0.618],
+        b1 = 11, d1 = 566 (L C_B/B)^−2.66 (ω̄ < 1);  b1 = −8.5, d1 = −4·566 (L/B)^−2.66 else;
+
+    k_yy the radius of gyration by L. With `wedge_reflection` it is their whole method."""
+    lam = np.asarray(lam_over_l, float) * L
+    a1 = 60.3 * cb**1.34 * (4 * k_yy) ** 2 * (0.87 / cb) ** (1 + fn) / np.log(B / T)
+    a2 = 0.0072 + 0.1676 * fn if fn < 0.12 else fn**1.5 * np.exp(-3.5 * fn)
+    w = (
+        2.142
+        * k_yy ** (1 / 3)
+        * np.sqrt(L / lam)
+        * (1 - 0.111 / cb * (np.log(B / T) - np.log(2.75)))
+        * (cb / 0.65) ** 0.17
+        * (-1.377 * fn**2 + 1.157 * fn + 0.618)
+    )
+    b1 = np.where(w < 1, 11.0, -8.5)
+    d1 = np.where(w < 1, 566 * (L * cb / B) ** -2.66, -566 * (L / B) ** -2.66 * 4)
+    return 4 * a1 * a2 * w**b1 * np.exp(b1 / d1 * (1 - w**d1))
 
 
 def pct(a, b):
@@ -244,11 +279,13 @@ def tables(res) -> str:
         "",
         "**Added-resistance peaks** R/(ρgζa²B²/L) (jaxtow's largest value on λ/L 0.7-2.5, "
         "step 0.025; its λ/L in brackets; GB + reflection: `WithReflection`, with Liu & "
-        "Papanikolaou's wedge form of the reflection as a check in the last column):",
+        "Papanikolaou's wedge form of the reflection as a check, and their whole "
+        "semi-empirical method, motion part and wedge, as a second check in the last "
+        "column):",
         "",
         "| model | Fn | measured | anchor GB | jaxtow GB | anchor far field | jaxtow far field "
-        "| jaxtow GB + reflection | check: GB + wedge |",
-        "|---|---|---|---|---|---|---|---|---|",
+        "| jaxtow GB + reflection | check: GB + wedge | check: Liu & Papanikolaou 2020 |",
+        "|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in res["added_resistance_peaks"]:
         lines.append(
@@ -260,7 +297,9 @@ def tables(res) -> str:
             f"{r['jaxtow_far_at']:.3g}) | {r['jaxtow_gb_reflection']:.1f} "
             f"({pct(r['jaxtow_gb_reflection'], r['measured'])}; "
             f"{r['jaxtow_gb_reflection_at']:.3g}) | {r['check_gb_wedge']:.1f} "
-            f"({pct(r['check_gb_wedge'], r['measured'])}) |"
+            f"({pct(r['check_gb_wedge'], r['measured'])}) | "
+            f"{r['check_liu_papanikolaou']:.1f} "
+            f"({pct(r['check_liu_papanikolaou'], r['measured'])}) |"
         )
     return "\n".join(lines)
 
