@@ -142,6 +142,26 @@ def test_required_pull(tow):
     assert float(p.speed) == pytest.approx(2.5, rel=1e-9)
 
 
+def test_worst_bollard_pull_is_the_required_pull_at_each_tp(tow):
+    """One compiled program over the Tp grid gives what `required_pull` gives at each Tp
+    (eagerly, with the sea's own Tp replaced), under a caller's jit too; a bad Tp is refused
+    with 'tps' named."""
+    import equinox as eqx
+
+    sea, tug = jt.presets.sea_state("survival"), jt.presets.illustrative_tug()
+    tps = np.array([6.0, 9.0, 12.0])
+    got = np.asarray(R.worst_bollard_pull(tow, sea, tps, tug=tug))
+    want = [
+        float(R.required_pull(tow, eqx.tree_at(lambda s: s.tp, sea, t), tug=tug).bollard_pull)
+        for t in tps
+    ]
+    np.testing.assert_allclose(got, want, rtol=1e-12)
+    traced = jax.jit(lambda t: R.worst_bollard_pull(tow, sea, t, tug=tug))(jnp.asarray(tps))
+    np.testing.assert_allclose(np.asarray(traced), want, rtol=1e-12)
+    with pytest.raises(ValueError, match="'tps'"):
+        R.worst_bollard_pull(tow, sea, np.array([6.0, -1.0]), tug=tug)
+
+
 def test_invalid_inputs_give_clear_messages(tow, calm):
     with pytest.raises(ValueError, match="cannot hold the tow.*bollard_pull"):
         R.operating_speed(

@@ -136,9 +136,9 @@ def irregular_sailing_drift(
 
 
 def overtaken_check(omega, S, beta, u, v=0.0, *, g: float = G):
-    """The check `irregular_sailing_drift` makes with ``throw=True``: (a sea the vessel
-    partly outruns, its message), the first a frequency carrying more than 0.1 % of the peak
-    spectral density with encounter frequency ≤ 0."""
+    """The check `irregular_sailing_drift` makes with ``throw=True``, as (predicate,
+    message): the predicate holds where the vessel outruns part of the sea, a frequency
+    carrying more than 0.1 % of the peak spectral density at encounter frequency ≤ 0."""
     omega, S = jnp.asarray(omega), jnp.asarray(S)
     over = encounter_frequency(omega, beta, u, v, g=g) <= 0
     significant = jnp.any(over & (S > 1e-3 * jnp.max(S)))

@@ -272,6 +272,9 @@ def required_pull(
     if not holds_tracers((tow, sea, speed, heading, tug)):
         # everything checked above: one compiled program, no run-time check (a host
         # callback would keep it out of the persistent compilation cache)
+        # (speed and heading as arrays: a Python number would be a static argument, one
+        # compile per value)
+        speed, heading = jnp.asarray(speed, float), jnp.asarray(heading, float)
         return _pull_program(tow, sea.unnamed(), speed, heading, tug)
     out = _pull(tow, sea, speed, heading, tug)
     checks = [NONNEGATIVE.traced("speed", speed), FINITE.traced("heading", heading)]
@@ -303,8 +306,11 @@ def worst_bollard_pull(
     if tug is not None:
         check_now(tug)
         POSITIVE.check("bollard_pull", tug.bollard_pull)
-    if holds_tracers((tow, sea, tps, heading, tug)):
-        return _pulls_over_tp(tow, sea, tps, heading, tug)
+    if holds_tracers((tow, sea, tps, heading, tug)):  # under a caller's jit or vmap
+        checks = [POSITIVE.traced("tps", tps), FINITE.traced("heading", heading)]
+        checks += sea.checks() + (tug.checks() if tug is not None else [])
+        return guard(_pulls_over_tp(tow, sea, tps, heading, tug), checks)
+    tps, heading = jnp.asarray(tps, float), jnp.asarray(heading, float)
     return _pulls_over_tp_program(tow, sea.unnamed(), tps, heading, tug)
 
 
