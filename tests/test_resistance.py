@@ -104,6 +104,7 @@ def test_budget_sums_and_trends(tow):
     np.testing.assert_allclose(r[..., :3], -np.asarray(b.body)[..., :3, 0], rtol=1e-14)
 
 
+@pytest.mark.slow  # the default suite's wall time (2 cores)
 def test_operating_speed_falls_with_hs_and_gradients_match_fd(tow):
     def speed(hs, wind, bp):
         tug = jt.presets.illustrative_tug(bollard_pull=bp)

@@ -129,6 +129,7 @@ EA_N = 2.6e8
 FITTED = "[vessel.skegs]\ncount = 2\nspan = 3.559\nchord = 8.0\n"
 
 
+@pytest.mark.slow  # the default suite's wall time (2 cores)
 def test_barge2b_from_particulars_plus_skegs_is_stable_again():
     """Barge 2 from its particulars (Clarke) is course unstable and its straight tow on
     2.5 L fishtails; with the fitted skegs it is course stable (c = +0.051 against the
