@@ -257,11 +257,8 @@ def required_pull(
     bollard pull BP with η BP P(U)/BP = R_tow(U) + R_tug(U). Differentiable in every input.
     A negative total (the environment pushes the tow ahead) is reported, not clipped."""
     NONNEGATIVE.check("speed", speed)
-    FINITE.check("heading", heading)
-    check_now(sea)
+    _check_pull_inputs(sea, heading, tug)
     if tug is not None:
-        check_now(tug)
-        POSITIVE.check("bollard_pull", tug.bollard_pull)
         if is_concrete(speed) and is_concrete(tug.free_speed):
             if np.any(np.asarray(speed) >= np.asarray(tug.free_speed)):
                 raise ValueError(
@@ -277,12 +274,29 @@ def required_pull(
         speed, heading = jnp.asarray(speed, float), jnp.asarray(heading, float)
         return _pull_program(tow, sea.unnamed(), speed, heading, tug)
     out = _pull(tow, sea, speed, heading, tug)
-    checks = [NONNEGATIVE.traced("speed", speed), FINITE.traced("heading", heading)]
-    checks += sea.checks() + (tug.checks() if tug is not None else [])
+    checks = [NONNEGATIVE.traced("speed", speed), *_traced_pull_checks(sea, heading, tug)]
     if tug is not None:
         below = jnp.any(jnp.asarray(speed) >= tug.free_speed)
         checks.append((below, "parameter 'speed' must be below the tug's free speed"))
     return guard(out, checks)
+
+
+def _check_pull_inputs(sea, heading, tug) -> None:
+    """Eager: the heading, the sea state and the tug (its bollard pull) of a pull
+    requirement, with a clear error naming a bad one (nothing is checked for traced
+    values: `_traced_pull_checks`)."""
+    FINITE.check("heading", heading)
+    check_now(sea)
+    if tug is not None:
+        check_now(tug)
+        POSITIVE.check("bollard_pull", tug.bollard_pull)
+
+
+def _traced_pull_checks(sea, heading, tug) -> list:
+    """The checks of `_check_pull_inputs` for a traced call (`guard`)."""
+    return [FINITE.traced("heading", heading), *sea.checks()] + (
+        tug.checks() if tug is not None else []
+    )
 
 
 def _pull(tow, sea, speed, heading, tug) -> PullRequirement:
@@ -301,14 +315,9 @@ def worst_bollard_pull(
     """`required_pull`'s bollard pull at zero speed over the peak periods ``tps`` [s] (the
     sea state's own Tp replaced), as one compiled program where everything is concrete."""
     POSITIVE.check("tps", tps)
-    FINITE.check("heading", heading)
-    check_now(sea)
-    if tug is not None:
-        check_now(tug)
-        POSITIVE.check("bollard_pull", tug.bollard_pull)
+    _check_pull_inputs(sea, heading, tug)
     if holds_tracers((tow, sea, tps, heading, tug)):  # under a caller's jit or vmap
-        checks = [POSITIVE.traced("tps", tps), FINITE.traced("heading", heading)]
-        checks += sea.checks() + (tug.checks() if tug is not None else [])
+        checks = [POSITIVE.traced("tps", tps), *_traced_pull_checks(sea, heading, tug)]
         return guard(_pulls_over_tp(tow, sea, tps, heading, tug), checks)
     tps, heading = jnp.asarray(tps, float), jnp.asarray(heading, float)
     return _pulls_over_tp_program(tow, sea.unnamed(), tps, heading, tug)
