@@ -12,7 +12,11 @@ present) and stops after the command-line imports (target: 2 s); and with ``--fo
 reads every frequency back from the cache and rewrites every output (imports of JAX,
 Capytaine, xarray and matplotlib, the datasets and the figures).
 
-    python benchmarks/bench_bem_pipeline.py [--panel-size 3] [--n-omega 4] [--json out.json]
+Both sides are warmed by one small solve first, then timed alternately ``--repeat`` times,
+the best of each kept.
+
+    python benchmarks/bench_bem_pipeline.py [--panel-size 3] [--n-omega 4] [--repeat 3]
+        [--json out.json]
 """
 
 from __future__ import annotations
@@ -63,6 +67,7 @@ def main(argv=None):
     )
     ap.add_argument("--panel-size", type=float, default=3.0)
     ap.add_argument("--n-omega", type=int, default=4)
+    ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
     cfg = read_config("barge2")
@@ -75,16 +80,25 @@ def main(argv=None):
 
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        capytaine_alone(mesh, body, omega[:1], beta[:1])  # warm Capytaine (its compiled kernels)
+        # one small solve on each side first, so that neither pays its one-off costs in the
+        # timing: Capytaine's tabulation and compiled kernels, jaxtow's first JAX program and
+        # its lazy imports (xarray, netCDF)
+        capytaine_alone(mesh, body, omega[:1], beta[:1])
         t = time.perf_counter()
-        capytaine_alone(mesh, body, omega, beta)
-        t_cpt = time.perf_counter() - t
-        t = time.perf_counter()
-        bem.bem_drift(mesh, omega, beta, body=body, cache_dir=tmp / "api_cache")
-        t_jt = time.perf_counter() - t
+        bem.bem_drift(mesh, omega[:1], beta[:1], body=body, cache_dir=tmp / "warm_cache")
+        t_first = time.perf_counter() - t
+        t_cpt, t_jt = math.inf, math.inf
+        for rep in range(args.repeat):  # alternating, the best of each: the machine is shared
+            t = time.perf_counter()
+            capytaine_alone(mesh, body, omega, beta)
+            t_cpt = min(t_cpt, time.perf_counter() - t)
+            t = time.perf_counter()
+            bem.bem_drift(mesh, omega, beta, body=body, cache_dir=tmp / f"api_cache_{rep}")
+            t_jt = min(t_jt, time.perf_counter() - t)
         print(
             f"Capytaine alone {t_cpt:.2f} s | jaxtow bem_drift {t_jt:.2f} s | "
-            f"ratio {t_jt / t_cpt:.2f}x (target <= 1.2x)"
+            f"ratio {t_jt / t_cpt:.2f}x (target <= 1.2x; best of {args.repeat} each, "
+            f"alternating) | jaxtow's first, one-frequency call {t_first:.2f} s"
         )
 
         toml = tmp / "barge2_small.toml"
@@ -121,6 +135,8 @@ def main(argv=None):
         capytaine_s=t_cpt,
         jaxtow_s=t_jt,
         ratio=t_jt / t_cpt,
+        repeats=args.repeat,
+        jaxtow_first_one_frequency_s=t_first,
         cli_first_s=times[0],
         cli_up_to_date_s=times[1],
         cli_cached_s=times[2],

@@ -89,14 +89,15 @@ def _merged_hull(cmesh, like: HullMesh) -> HullMesh:
 
 
 def symmetric_capytaine_mesh(mesh: HullMesh):
-    """(hull, lid, ordered mesh): ``mesh`` as Capytaine reflection-symmetric meshes about the
-    centre plane y = 0 (Capytaine's "xOz") when the hull and the lid are port-starboard
-    symmetric, and the same panels as a jaxtow `HullMesh` in Capytaine's panel order. The
-    solver then works on two half-size blocks: about 4× less LU work and half the influence
-    matrices, with the same solution (to round-off on the box, to 1e-5 of the added mass on
-    the raked barge, where Capytaine's reflected-panel integrals differ slightly). Only the
-    centre plane is used: nesting the fore-aft plane too moves the raked barge's added mass
-    by 1e-4. A hull with no such symmetry comes back as plain meshes, unchanged."""
+    """(hull, lid, ordered mesh): ``mesh`` as Capytaine reflection-symmetric meshes about
+    every plane of symmetry the hull and the lid share, the centre plane y = 0 (Capytaine's
+    "xOz") innermost, then the midship plane x = 0 ("yOz"), and the same panels as a jaxtow
+    `HullMesh` in Capytaine's panel order. The solver then works on half- or quarter-size
+    blocks, with the same solution: to round-off on the box; on the raked barge the added
+    mass moves by 1e-4 of its largest value and the mean drift by 0.5 % of its largest
+    (Capytaine's reflected-panel integrals differ slightly; the plain solve is the one that
+    breaks the symmetry). A hull with no such symmetry comes back as plain meshes,
+    unchanged."""
     planes = _mirror_planes(mesh.vertices, mesh.faces)
     if len(mesh.lid_faces):
         lid_planes = _mirror_planes(mesh.lid_vertices, mesh.lid_faces)

@@ -63,7 +63,7 @@ class _Prepared:
     hull_mask: np.ndarray  # the hull panels among hull and lid
     all_centres: np.ndarray  # hull and lid panels (the sources' order)
     all_areas: np.ndarray
-    full: object  # Capytaine mesh of hull and lid, plain (sources' order)
+    full: object  # Capytaine mesh of hull and lid (sources' order): symmetric, or plain
     centres: np.ndarray  # hull panels
     normals: np.ndarray
     areas: np.ndarray
@@ -71,6 +71,48 @@ class _Prepared:
     wl_normals: np.ndarray
     wl_lengths: np.ndarray
     gradient: tuple  # (index, weights) of `surface_gradient_operator`
+    solver: object  # one Capytaine BEMSolver for every frequency (it loads its tabulation)
+    mass_matrix: np.ndarray  # (6, 6) of the body
+    reflections: tuple | None  # `_reflection_plan` of the near field's points (None: no symmetry)
+
+
+_REFLECTIONS = {"xOz": np.array([1.0, -1.0, 1.0]), "yOz": np.array([-1.0, 1.0, 1.0])}
+
+
+def _matching(points, targets, tol: float = 1e-6):
+    """For each of ``points`` (n, 3) the index of the same point among ``targets`` (to
+    ``tol``), or None where one has no match."""
+    key = {tuple(k): i for i, k in enumerate(np.round(targets / tol).astype(np.int64))}
+    idx = [key.get(tuple(k)) for k in np.round(points / tol).astype(np.int64)]
+    return None if any(i is None for i in idx) else np.asarray(idx, int)
+
+
+def _reflection_plan(symmetric_mesh, panel_centres, points):
+    """How to get the potential at ``points`` from sources on the panels of a Capytaine
+    reflection-symmetric mesh (``panel_centres`` in its merged order) with only the influence
+    coefficients of its smallest part, as Capytaine's own symmetric solve does. The free-
+    surface Green function is unchanged by a reflection R in a vertical plane, so
+    Σ_j G(p, R q_j) σ(R q_j) = Σ_j G(R p, q_j) σ(R q_j) over the part's panels q_j: the
+    potential at p is Σ_R S(R p, part) σ[R part] over the reflections R of the mesh's group.
+    Returns (the part's mesh, [(R p's index among ``points``, R part's panel indices)] for
+    each R), or None where ``points`` are not symmetric too."""
+    planes, part = [], symmetric_mesh
+    while hasattr(part, "half"):
+        planes.append(part.plane)
+        part = part.half
+    part_centres = np.asarray(part.faces_centers)
+    images = []
+    for n in range(2 ** len(planes)):  # every product of the plane reflections
+        sign = np.ones(3)
+        for i, plane in enumerate(planes):
+            if n >> i & 1:
+                sign = sign * _REFLECTIONS[plane]
+        to_point = _matching(points * sign, points)
+        to_panel = _matching(part_centres * sign, panel_centres)
+        if to_point is None or to_panel is None:
+            return None
+        images.append((to_point, to_panel))
+    return part, images
 
 
 def prepare(mesh: HullMesh, body: RigidBody, symmetry: bool = True) -> _Prepared:
@@ -91,8 +133,7 @@ def prepare(mesh: HullMesh, body: RigidBody, symmetry: bool = True) -> _Prepared
         **mass_kw,
     )
     hull_mesh = cbody.mesh
-    full = cbody.mesh_including_lid  # the sources are in its panel order
-    full = full.merged() if hasattr(full, "merged") else full
+    full = cbody.mesh_including_lid  # the sources are in its panel order (merged or not)
     centres = np.asarray(hull_mesh.faces_centers)
     all_centres = np.asarray(full.faces_centers)
     hull_mask = np.asarray(cbody.hull_mask, bool)
@@ -104,6 +145,13 @@ def prepare(mesh: HullMesh, body: RigidBody, symmetry: bool = True) -> _Prepared
     nrm = np.asarray(hull_mesh.faces_normals)
     p0, p1, owner = mesh.waterline()
     wpts = 0.5 * (p0 + p1)
+    reflections = (
+        _reflection_plan(full, all_centres, np.concatenate([centres, wpts]))
+        if hasattr(full, "half")
+        else None
+    )
+    if reflections is None and hasattr(full, "merged"):
+        full = full.merged()  # for the influence coefficients of every panel
     return _Prepared(
         cbody=cbody,
         mesh=mesh,
@@ -118,7 +166,25 @@ def prepare(mesh: HullMesh, body: RigidBody, symmetry: bool = True) -> _Prepared
         wl_normals=mesh.normals[owner],
         wl_lengths=np.linalg.norm(p1 - p0, axis=1),
         gradient=surface_gradient_operator(mesh.vertices, mesh.faces, centres, nrm, wpts, owner),
+        solver=cpt.BEMSolver(method="indirect"),
+        mass_matrix=body.mass_matrix(),
+        reflections=reflections,
     )
+
+
+def _point_potential(pr: _Prepared, points, sources, **gf) -> np.ndarray:
+    """The potential S·σ at ``points`` (hull centres, then waterline points) of the sources
+    ``sources`` (n_panels, n_problems), from Capytaine's influence coefficients of points;
+    on a symmetric hull from those of the mesh's smallest part only (`_reflection_plan`)."""
+    build = pr.solver.engine.build_S_matrix
+    if pr.reflections is None:
+        return np.asarray(build(points, pr.full, **gf)) @ sources
+    part, images = pr.reflections
+    S = np.asarray(build(points, part, **gf))
+    pot = np.zeros((points.shape[0], sources.shape[1]), complex)
+    for to_point, to_panel in images:
+        pot += S[to_point] @ sources[to_panel]
+    return pot
 
 
 def kochin(centres, areas, sources, theta, wavenumber: float, water_depth: float = math.inf):
@@ -187,7 +253,7 @@ def solve_frequency(
         body = fixed_body()
     pr = prepared if prepared is not None else prepare(mesh, body, symmetry)
     cbody, mesh = pr.cbody, pr.mesh
-    solver = solver or cpt.BEMSolver(method="indirect")
+    solver = solver or pr.solver
     env = dict(omega=float(omega), rho=rho, g=g, water_depth=water_depth)
     rad = [cpt.RadiationProblem(body=cbody, radiating_dof=d, **env) for d in DOFS]
     dif = [
@@ -206,7 +272,7 @@ def solve_frequency(
     fd = np.array([[r.forces[d] for d in DOFS] for r in dres])
     exc = fk + fd  # (nb, 6)
     Bv = np.zeros((6, 6)) if fixed else roll_damping_matrix(body, A[3, 3])
-    H = -(omega**2) * (body.mass_matrix() + A) - 1j * omega * (Bd + Bv) + body.stiffness
+    H = -(omega**2) * (pr.mass_matrix + A) - 1j * omega * (Bd + Bv) + body.stiffness
     rao = np.zeros_like(exc) if fixed else np.linalg.solve(H, exc.T).T  # (nb, 6)
 
     # far field (Kochin functions of every problem at once)
@@ -236,7 +302,7 @@ def solve_frequency(
     # the potential S·σ at the collocation points from the influence coefficients of points
     # (not the solver's own ``potential``: its mesh-to-mesh coefficients differ near the
     # free surface, and the near field was validated with these)
-    pot = np.asarray(solver.engine.build_S_matrix(pts, pr.full, **gf)) @ src  # (n_hull + m, nprob)
+    pot = _point_potential(pr, pts, src, **gf)  # (n_hull + m, nprob)
     index, weights = pr.gradient
     phi = np.empty((beta.size, pts.shape[0]), complex)
     for ib, r in enumerate(dres):
