@@ -17,7 +17,9 @@ persistent cache at one folder:
   are evicted past the cap.
 
 Every program is stored (`MIN_COMPILE_SECONDS` = 0), so that what the cache holds does not
-depend on how loaded the machine was when it compiled.
+depend on how loaded the machine was when it compiled. The traced programs of jaxtow's entry
+points are kept beside it, in ``<folder>-programs`` (`jaxtow._program_cache`), on and off
+with it.
 """
 
 from __future__ import annotations
@@ -26,6 +28,8 @@ import os
 from pathlib import Path
 
 import jax
+
+from ._program_cache import set_folder
 
 #: Environment variable: the cache folder, or "off" / "0" / "false" / "no" to disable.
 ENV = "JAXTOW_COMPILE_CACHE"
@@ -65,6 +69,7 @@ def enable_compile_cache(path=None) -> Path | None:
         raise ValueError(
             f"compile cache folder {str(path)!r} ({ENV}) cannot be created: {e}"
         ) from e
+    set_folder(path.with_name(path.name + "-programs"))  # the traced programs beside it
     if current and Path(current) == path:
         return path
     jax.config.update("jax_compilation_cache_dir", str(path))

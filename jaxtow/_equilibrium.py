@@ -24,6 +24,7 @@ Naming: equilibria are ordered by ascending ψ and labelled by ``branch`` = −1
 
 from __future__ import annotations
 
+import functools
 import math
 
 import equinox as eqx
@@ -33,6 +34,7 @@ import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
 from ._dynamics import TowModel, force_breakdown, vector_field
+from ._program_cache import cached_call
 from ._roots import bisect_fixed, brackets, polish
 from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._towline import Towline
@@ -291,9 +293,10 @@ def padded_equilibria(
     # the compiled call checks only what check_now could not see (a traced model, when
     # called under a user's jit): a program with run-time checks holds host callbacks,
     # which JAX's persistent compilation cache never stores
-    eqs = _equilibria_jit(
-        model, n_grid=n_grid, max_roots=max_roots, psi_range=psi_range, throw=holds_tracers(model)
-    )
+    options = dict(n_grid=n_grid, max_roots=max_roots, psi_range=psi_range)
+    throw = holds_tracers(model)
+    run = functools.partial(_equilibria_jit, **options, throw=throw)
+    eqs = cached_call(f"equilibria{sorted(options.items())}{throw}", run, model)
     if int(eqs.n_roots) > max_roots:  # refuse a silently truncated result
         raise ValueError(
             f"{int(eqs.n_roots)} equilibria found but max_roots={max_roots}; raise max_roots"

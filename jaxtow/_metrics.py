@@ -19,6 +19,7 @@ import numpy as np
 
 from ._dynamics import ForceBreakdown, TowModel, force_breakdown, sway_offset
 from ._equilibrium import equilibria as find_equilibria
+from ._program_cache import persistent
 from ._rules import check_now
 
 
@@ -116,6 +117,7 @@ def force_history(model: TowModel, sim) -> ForceHistory:
     )
 
 
+@persistent
 @eqx.filter_jit
 def _force_history(model, ts, ys):
     """The force breakdown at every saved state (the rows after a failed run, inf, are

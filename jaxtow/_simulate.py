@@ -27,6 +27,7 @@ from jaxtyping import Array, Bool, Float, Int
 
 from ._dynamics import TowModel, all_valid, unchecked_vector_field, validity
 from ._parameters import check_values, with_parameters
+from ._program_cache import persistent
 from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._stability import eigenvalues
 from ._sweep import without_metadata
@@ -76,6 +77,7 @@ def choose_solver(model: TowModel, y0, t1: float, t0: float = 0.0) -> str:
     return "kvaerno5" if float(np.max(np.abs(lam))) * (t1 - t0) > STIFF_THRESHOLD else "tsit5"
 
 
+@persistent
 @eqx.filter_jit
 def _eigenvalues_program(model, y):
     return eigenvalues(model, y, throw=False)
@@ -236,7 +238,7 @@ def _run(model, y0, ts, *, solver: str, rtol: float, atol: float, max_steps: int
     )
 
 
-_run_jit = jax.jit(_run, static_argnames=("solver", "rtol", "atol", "max_steps"))
+_run_jit = persistent(jax.jit(_run, static_argnames=("solver", "rtol", "atol", "max_steps")))
 
 
 def _save_grid(t0, t1, n_save):

@@ -30,6 +30,7 @@ from jax.sharding import Mesh, NamedSharding, PartitionSpec as P
 from ._dynamics import TowModel, all_valid, validity
 from ._equilibrium import analytic_equilibria, equilibria_fixed
 from ._parameters import check_values, with_parameters
+from ._program_cache import cached_call
 from ._progress import AbstractProgressMeter, NoProgressMeter
 from ._stability import (
     ABSCISSA_METHODS,
@@ -143,7 +144,7 @@ def _cached_kernel(options: tuple):
     jitted = jax.jit(batched)
 
     def kernel(model, flat_params):
-        return jitted(without_metadata(model), flat_params)
+        return cached_call(f"sweep{options}", jitted, without_metadata(model), flat_params)
 
     kernel.jitted = jitted  # type: ignore[attr-defined]  (for .lower/.trace in benchmarks)
     return kernel

@@ -38,6 +38,7 @@ from jaxtyping import Array
 from ._dynamics import TowModel
 from ._equilibrium import heading_residual, state_from_heading
 from ._parameters import check_values, get_parameter, with_parameters
+from ._program_cache import persistent
 from ._roots import newton
 from ._stability import STABLE, classify, eigenvalues, max_real_eigenvalue
 from ._vessel import VESSEL_PARAMETERS
@@ -434,6 +435,7 @@ def _abscissa_of(model: TowModel, name: str, value):
     return max_real_eigenvalue(m, y, throw=False), ok
 
 
+@persistent
 @functools.partial(jax.jit, static_argnames=("names",))
 def _scan_abscissa(model: TowModel, names: tuple[str, ...], which, values):
     """(max Re λ', converged) with parameter ``names[which]`` set to each of ``values``:

@@ -30,7 +30,7 @@ LAYER_NAMES = {
     "jaxtow.io": "files",
 }
 CORE = ("_units", "_roots", "_interp", "_special", "_compile_cache", "_progress", "_rules")
-CORE += ("_config", "_lazy", "_values", "_interrupt")
+CORE += ("_config", "_lazy", "_values", "_interrupt", "_program_cache")
 
 
 def _contract_modules() -> list[str]:

@@ -76,8 +76,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument(
         "--no-compile-cache",
         action="store_true",
-        help="do not use the persistent compilation cache (default: on, in "
-        "$JAXTOW_COMPILE_CACHE or ~/.cache/jaxtow/xla; JAXTOW_COMPILE_CACHE=off also disables it)",
+        help="do not use the persistent compilation cache nor the traced programs beside it "
+        "(default: on, in $JAXTOW_COMPILE_CACHE or ~/.cache/jaxtow/xla, and <that>-programs; "
+        "JAXTOW_COMPILE_CACHE=off also disables them)",
     )
     sub = p.add_subparsers(dest="command", required=True)
     for module in SUBCOMMANDS:

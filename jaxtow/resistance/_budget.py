@@ -7,6 +7,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 
+from .._program_cache import persistent
 from .._rules import FINITE, NONNEGATIVE, POSITIVE, check_now, guard, holds_tracers, is_concrete
 from .._units import RHO_SEA, froude_number
 from .._vessel import Vessel
@@ -306,7 +307,7 @@ def _pull(tow, sea, speed, heading, tug) -> PullRequirement:
     return PullRequirement(towing_force=total, bollard_pull=bp, budget=b)
 
 
-_pull_program = eqx.filter_jit(_pull)
+_pull_program = persistent(eqx.filter_jit(_pull))
 
 
 def worst_bollard_pull(
@@ -332,7 +333,7 @@ def _pulls_over_tp(tow, sea, tps, heading, tug):
     return jax.vmap(one)(tps)
 
 
-_pulls_over_tp_program = eqx.filter_jit(_pulls_over_tp)
+_pulls_over_tp_program = persistent(eqx.filter_jit(_pulls_over_tp))
 
 
 def resistance_grid(
@@ -347,6 +348,7 @@ def resistance_grid(
     return guard(out, [NONNEGATIVE.traced("speeds", speeds), POSITIVE.traced("tps", tps)])
 
 
+@persistent
 @eqx.filter_jit
 def _resistance_grid(tow, sea, speeds, tps, *, heading, tug):
     speeds, tps = jnp.asarray(speeds, float), jnp.asarray(tps, float)

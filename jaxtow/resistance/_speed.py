@@ -8,6 +8,7 @@ import equinox as eqx
 import jax
 import jax.numpy as jnp
 
+from .._program_cache import persistent
 from .._roots import bisect, brackets
 from .._rules import check_positive, guard, is_concrete
 from .._units import TONNE_FORCE, G, froude_number
@@ -57,6 +58,7 @@ def _excess(speed, args):
     )
 
 
+@persistent
 @eqx.filter_jit
 def _operating_point(tow, tug, sea, heading, n_scan, rtol):
     args = (tow, tug, sea, heading)

@@ -24,6 +24,7 @@ from .. import resistance
 from .._equilibrium import equilibria
 from .._interrupt import requested as interrupt_requested
 from .._metrics import FishtailMetrics, Trajectory, fishtail_metrics, trajectory
+from .._program_cache import persistent
 from .._results import sweep
 from .._rules import ParameterError
 from .._simulate import initial_state, simulate
@@ -380,6 +381,7 @@ def _hull_drift(tow) -> tuple[DriftRecord, tuple]:
     return record, (np.asarray(q.omega), fx)
 
 
+@persistent
 @eqx.filter_jit
 def _drift_program(q, spectra, angles, speeds, *, form):
     """`_hull_drift`'s numbers as one compiled program: the head-sea surge drift on the

@@ -12,6 +12,7 @@ import numpy as np
 
 from .._dynamics import all_valid, at_tug_speed, validity
 from .._equilibrium import padded_equilibria, straight_behind
+from .._program_cache import persistent
 from .._stability import MARGINAL, STABILITY_LABELS, STABLE, stability
 from ._records import Bounds, Condition, EquilibriumRow
 
@@ -77,6 +78,7 @@ def yaw_verdict(psi, max_real, found, stab_codes) -> str:
     return "fishtails"
 
 
+@persistent
 @eqx.filter_jit
 def stability_and_validity(model, states):
     """Stability and the validity flags of ``states`` as one compiled program: run eagerly,

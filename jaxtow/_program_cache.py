@@ -1,0 +1,231 @@
+"""A persistent cache of traced programs, beside the compilation cache (on wherever it is).
+
+JAX's persistent compilation cache (`jaxtow.enable_compile_cache`) skips XLA's compile on a
+second run, but not the tracing and lowering that come before it: the cache key is computed
+from the lowered program, so every run traces every kernel again. For the sweep kernel and
+a study's condition programs that is most of what a warm run costs (0.9 s of a sweep
+kernel's 1 s, measured). `cached_call` keeps the lowered program itself, exported with
+`jax.export` and serialised (StableHLO, the format JAX guarantees to read back), so that a
+later process deserialises it in milliseconds and finds its compiled form in the
+compilation cache.
+
+* The folder: ``<compile cache folder>-programs`` (by default ``~/.cache/jaxtow/xla-programs``),
+  set by `enable_compile_cache` where it chooses the folder (not where the user set JAX's
+  own folder beforehand); off with it (``JAXTOW_COMPILE_CACHE=off``,
+  ``--no-compile-cache``). Under it, one subfolder per `code_digest`: a new jaxtow, JAX or
+  Equinox, or an edited jaxtow source, starts an empty one and the others are removed.
+* The key of a program: its name, the code digest, the pickled static part of its
+  arguments (everything but arrays, as `equinox.filter_jit` treats them) with the
+  arguments' tree structure, and each array's shape, dtype and weak type. A static part
+  that cannot be pickled, a call under a trace, several devices, or a program that
+  cannot be exported (one that holds a host callback) runs as it is, traced as before;
+  the last is remembered with a marker file so that it is not tried again.
+* What comes back equals the direct call's arrays (the same program; tested to
+  round-off), as NumPy-compatible JAX arrays in the same tree.
+
+Only host-level entry points use it (a sweep's chunks, a condition's equilibria and
+stability): an exported program carries no derivative rules, so nothing that is
+differentiated goes through it.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import importlib.metadata as md
+import io
+import os
+import pickle
+import shutil
+import tempfile
+from pathlib import Path
+
+import equinox as eqx
+import jax
+from jax import export
+from jax.core import Tracer
+
+try:  # Equinox's marker of a missing field, found in its modules' tree structures
+    from equinox._module._flatten import MISSING as _EQX_MISSING
+except ImportError:  # another Equinox: its trees may not round-trip; the check in `_export` says
+    _EQX_MISSING = object()
+
+_FOLDER: Path | None = None
+#: (key) -> (exported program, output tree) for this process
+_LOADED: dict = {}
+
+
+def set_folder(folder) -> None:
+    """Turn the cache on in ``folder`` (None: off). Called by `enable_compile_cache`."""
+    global _FOLDER
+    _FOLDER = None if folder is None else Path(folder)
+    _LOADED.clear()
+
+
+def folder() -> Path | None:
+    """The current digest's subfolder, created (and the others removed) on first use; None
+    where the cache is off."""
+    if _FOLDER is None:
+        return None
+    return _digest_folder(_FOLDER, code_digest())
+
+
+@functools.lru_cache(maxsize=4)
+def _digest_folder(base: Path, digest: str) -> Path | None:
+    here = base / digest
+    try:
+        here.mkdir(parents=True, exist_ok=True)
+        for other in base.iterdir():
+            if other.is_dir() and other.name != digest:
+                shutil.rmtree(other, ignore_errors=True)
+    except OSError:
+        return None
+    return here
+
+
+@functools.lru_cache(maxsize=1)
+def code_digest() -> str:
+    """A digest of what a traced program depends on besides its arguments: jaxtow's source
+    and data files (by name, size and modification time), the versions of JAX, jaxlib and
+    Equinox, float64 on or off, and the backend."""
+    h = hashlib.blake2b(digest_size=10)
+    root = Path(__file__).parent
+    for path in sorted(root.rglob("*")):
+        if not path.is_file() or "__pycache__" in path.parts:
+            continue
+        rel = path.relative_to(root).as_posix().encode()
+        if path.suffix == ".py":
+            h.update(rel + b"\0" + path.read_bytes())
+        else:
+            st = path.stat()
+            h.update(rel + f"\0{st.st_size}\0{st.st_mtime_ns}".encode())
+    for dist in ("jax", "jaxlib", "equinox"):
+        try:
+            h.update(f"{dist}={md.version(dist)}".encode())
+        except md.PackageNotFoundError:
+            h.update(dist.encode())
+    h.update(f"x64={jax.config.jax_enable_x64}".encode())  # pyright: ignore[reportAttributeAccessIssue]
+    h.update(jax.default_backend().encode())
+    return h.hexdigest()
+
+
+def _key(name: str, static, treedef, leaves) -> str | None:
+    try:
+        blob = pickle.dumps((name, static, treedef), protocol=5)
+    except Exception:  # an unpicklable static part (a lambda, say): no key, no caching
+        return None
+    h = hashlib.blake2b(blob, digest_size=16)
+    for leaf in leaves:
+        weak = getattr(leaf, "weak_type", False)
+        h.update(f"{leaf.shape}{leaf.dtype}{weak};".encode())
+    return h.hexdigest()
+
+
+class _Pickler(pickle.Pickler):
+    """Pickles Equinox's MISSING marker by name: it is compared by identity, so an unpickled
+    copy would be a different object and the tree structure would not match its own."""
+
+    def persistent_id(self, obj):  # pyright: ignore[reportIncompatibleMethodOverride]
+        return "equinox.MISSING" if obj is _EQX_MISSING else None
+
+
+class _Unpickler(pickle.Unpickler):
+    def persistent_load(self, pid):
+        if pid == "equinox.MISSING":
+            return _EQX_MISSING
+        raise pickle.UnpicklingError(f"unknown persistent id {pid!r}")
+
+
+def _dumps(obj) -> bytes:
+    buf = io.BytesIO()
+    _Pickler(buf, protocol=5).dump(obj)
+    return buf.getvalue()
+
+
+def _loads(data: bytes):
+    return _Unpickler(io.BytesIO(data)).load()
+
+
+def _write(path: Path, data: bytes) -> None:
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-")
+    try:
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    except OSError:
+        Path(tmp).unlink(missing_ok=True)
+
+
+def _load(path: Path):
+    try:
+        out_tree, blob = _loads(path.read_bytes())
+        return export.deserialize(bytearray(blob)), out_tree
+    except Exception:  # missing, half-removed or from another version: trace instead
+        return None
+
+
+def cached_call(name: str, fn, *args, **kwargs):
+    """``fn(*args, **kwargs)`` through the program cache (the module docstring): ``fn`` a
+    jitted function (`jax.jit` or `equinox.filter_jit`); ``name`` names it in the key."""
+    here = folder()
+    if here is None or jax.device_count() > 1:
+        return fn(*args, **kwargs)
+    dynamic, static = eqx.partition((args, kwargs), eqx.is_array)
+    leaves, treedef = jax.tree_util.tree_flatten(dynamic)
+    if any(isinstance(leaf, Tracer) for leaf in leaves):
+        return fn(*args, **kwargs)
+    key = _key(name, static, treedef, leaves)
+    if key is None:
+        return fn(*args, **kwargs)
+    hit = _LOADED.get(key)
+    if hit is None:
+        path, skip = here / f"{key}.program", here / f"{key}.skip"
+        if skip.exists():
+            return fn(*args, **kwargs)
+        hit = _load(path) if path.exists() else None
+        if hit is None:
+            hit = _export(fn, static, treedef, leaves)
+            if hit is None:
+                _write(skip, b"")
+                return fn(*args, **kwargs)
+            exported, out_tree, blob = hit
+            _write(path, blob)
+            hit = exported, out_tree
+        _LOADED[key] = hit
+    exported, out_tree = hit
+    return jax.tree_util.tree_unflatten(out_tree, exported.call(*leaves))
+
+
+class persistent:  # noqa: N801 (used as a decorator)
+    """``fn`` (a jitted function) with every host-level call through `cached_call`; calls
+    under a trace (inside another program, or differentiated) go straight to ``fn``. Its
+    other attributes (``lower``, ``trace``) are ``fn``'s."""
+
+    def __init__(self, fn):
+        functools.update_wrapper(self, fn)
+        self._name = f"{getattr(fn, '__module__', '')}.{getattr(fn, '__qualname__', repr(fn))}"
+
+    def __call__(self, *args, **kwargs):
+        return cached_call(self._name, self.__wrapped__, *args, **kwargs)
+
+    def __getattr__(self, attr):
+        return getattr(self.__wrapped__, attr)
+
+
+def _export(fn, static, treedef, leaves):
+    out_tree = []
+
+    def flat(*dynamic_leaves):
+        args, kwargs = eqx.combine(jax.tree_util.tree_unflatten(treedef, dynamic_leaves), static)
+        out_leaves, tree = jax.tree_util.tree_flatten(fn(*args, **kwargs))
+        out_tree.append(tree)
+        return out_leaves
+
+    try:
+        exported = export.export(jax.jit(flat))(*leaves)
+        blob = _dumps((out_tree[0], exported.serialize()))
+        if _loads(blob)[0] != out_tree[0]:  # a tree that does not come back as it went
+            return None
+    except Exception:  # a host callback, an unexportable custom call, an unpicklable output
+        return None
+    return exported, out_tree[0], blob

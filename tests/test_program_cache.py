@@ -1,0 +1,123 @@
+"""The persistent cache of traced programs: a later process reads a program back instead of
+tracing it, gets the same numbers, and never reads one that does not fit its call."""
+
+import equinox as eqx
+import jax
+import jax.numpy as jnp
+import numpy as np
+import pytest
+
+import jaxtow as jt
+from jaxtow import _program_cache as pc
+
+
+@pytest.fixture
+def cache(tmp_path):
+    pc.set_folder(tmp_path / "programs")
+    yield tmp_path / "programs"
+    pc.set_folder(None)
+
+
+def _new_process(monkeypatch):
+    """What a new process has: nothing loaded, and nothing may be traced for export."""
+    pc._LOADED.clear()
+
+    def refuse(*_):
+        raise AssertionError("the program was traced again instead of read back")
+
+    monkeypatch.setattr(pc, "_export", refuse)
+
+
+def _files(cache, suffix):
+    return sorted(p.name for p in cache.rglob(f"*.{suffix}"))
+
+
+def test_equilibria_are_read_back_equal_in_a_new_process(cache, monkeypatch):
+    """The equilibria program (an Equinox module in and out, Equinox's MISSING marker in
+    its tree) is stored once and read back, with the same numbers to the bit."""
+    model = jt.tow.load("barge2a").model()
+    pc.set_folder(None)
+    direct = jt.padded_equilibria(model, n_grid=201)  # the cache off: the program as it is
+    pc.set_folder(cache)
+    first = jt.padded_equilibria(model, n_grid=201)
+    assert len(_files(cache, "program")) == 1
+    _new_process(monkeypatch)
+    again = jt.padded_equilibria(model, n_grid=201)
+    for a, b, c in zip(jax.tree.leaves(direct), jax.tree.leaves(first), jax.tree.leaves(again)):
+        np.testing.assert_array_equal(np.asarray(a), np.asarray(b))
+        np.testing.assert_array_equal(np.asarray(b), np.asarray(c))
+    assert type(again) is type(direct)
+    assert again.compact().psi.shape == direct.compact().psi.shape  # MISSING came back as it
+
+
+def test_the_key_holds_the_static_options_and_the_shapes(cache, monkeypatch):
+    @pc.persistent
+    @eqx.filter_jit
+    def f(x, *, power):
+        return {"y": x**power}
+
+    x3 = jnp.arange(3.0)
+    np.testing.assert_array_equal(f(x3, power=2)["y"], x3**2)
+    np.testing.assert_array_equal(f(x3, power=3)["y"], x3**3)  # another static option
+    np.testing.assert_array_equal(f(jnp.arange(4.0), power=2)["y"], jnp.arange(4.0) ** 2)
+    np.testing.assert_array_equal(f(x3.astype(jnp.float32), power=2)["y"], x3**2)
+    assert len(_files(cache, "program")) == 4
+    _new_process(monkeypatch)
+    np.testing.assert_array_equal(f(x3 + 1, power=3)["y"], (x3 + 1) ** 3)  # read back
+    with pytest.raises(AssertionError, match="traced again"):
+        f(x3, power=5)  # a call it has not seen is traced (here: refused)
+
+
+def test_a_program_with_a_host_callback_runs_as_it_is(cache):
+    """A run-time check (`equinox.error_if`, a host callback) cannot be exported: the call
+    runs directly, raises as it should, and a marker keeps later runs from trying again."""
+
+    @pc.persistent
+    @eqx.filter_jit
+    def checked(x):
+        return eqx.error_if(x, x < 0, "x must be >= 0")
+
+    assert float(checked(jnp.asarray(2.0))) == 2.0
+    assert len(_files(cache, "skip")) == 1 and _files(cache, "program") == []
+    with pytest.raises(Exception, match="x must be >= 0"):
+        checked(jnp.asarray(-1.0))
+
+
+def test_calls_under_a_trace_and_with_the_cache_off_go_straight_to_the_function(tmp_path):
+    @pc.persistent
+    @eqx.filter_jit
+    def square(x):
+        return x**2
+
+    assert float(jax.grad(square)(3.0)) == 6.0  # no cache: direct
+    pc.set_folder(tmp_path / "programs")
+    try:
+        assert float(jax.grad(square)(jnp.asarray(3.0))) == 6.0  # traced argument: direct
+        assert not list((tmp_path / "programs").rglob("*.program"))
+        assert float(square(jnp.asarray(3.0))) == 9.0
+        assert len(list((tmp_path / "programs").rglob("*.program"))) == 1
+    finally:
+        pc.set_folder(None)
+
+
+def test_a_new_code_digest_starts_an_empty_folder(cache, monkeypatch):
+    @pc.persistent
+    @eqx.filter_jit
+    def double(x):
+        return 2 * x
+
+    double(jnp.arange(2.0))
+    (old,) = [p for p in cache.iterdir() if p.is_dir()]
+    monkeypatch.setattr(pc, "code_digest", lambda: "another")
+    double(jnp.arange(2.0))
+    assert [p.name for p in cache.iterdir() if p.is_dir()] == ["another"]
+    assert not old.exists()
+
+
+def test_the_compile_cache_switch_turns_it_on_beside_its_folder(tmp_path, monkeypatch):
+    monkeypatch.setattr(jax.config, "update", lambda *_: None)  # JAX's own cache stays off
+    try:
+        jt.enable_compile_cache(tmp_path / "xla")
+        assert pc._FOLDER == tmp_path / "xla-programs"
+    finally:
+        pc.set_folder(None)
