@@ -147,7 +147,12 @@ def _loads(data: bytes):
 
 
 def _write(path: Path, data: bytes) -> None:
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-")
+    """Atomically (a reader sees the whole file or none); a folder removed meanwhile by a run
+    of another jaxtow version, or a full disk, only costs the next run a trace."""
+    try:
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-")
+    except OSError:
+        return
     try:
         with os.fdopen(fd, "wb") as f:
             f.write(data)
