@@ -161,10 +161,14 @@ def _write(path: Path, data: bytes) -> None:
         Path(tmp).unlink(missing_ok=True)
 
 
+def _parse(data: bytes):
+    out_tree, blob = _loads(data)
+    return export.deserialize(bytearray(blob)), out_tree
+
+
 def _load(path: Path):
     try:
-        out_tree, blob = _loads(path.read_bytes())
-        return export.deserialize(bytearray(blob)), out_tree
+        return _parse(path.read_bytes())
     except Exception:  # missing, half-removed or from another version: trace instead
         return None
 
@@ -193,9 +197,11 @@ def cached_call(name: str, fn, *args, **kwargs):
             if hit is None:
                 _write(skip, b"")
                 return fn(*args, **kwargs)
-            exported, out_tree, blob = hit
-            _write(path, blob)
-            hit = exported, out_tree
+            _write(path, hit)
+            # call what a later run reads back, not the fresh export: the deserialised program
+            # drops the outputs' weak typing, and a run that saw the fresh one would type them
+            # differently from the next and compile what follows it twice
+            hit = _parse(hit)
         _LOADED[key] = hit
     exported, out_tree = hit
     return jax.tree_util.tree_unflatten(out_tree, exported.call(*leaves))
@@ -233,4 +239,4 @@ def _export(fn, static, treedef, leaves):
             return None
     except Exception:  # a host callback, an unexportable custom call, an unpicklable output
         return None
-    return exported, out_tree[0], blob
+    return blob
