@@ -68,6 +68,27 @@ def test_the_key_holds_the_static_options_and_the_shapes(cache, monkeypatch):
         f(x3, power=5)  # a call it has not seen is traced (here: refused)
 
 
+class _Scale(eqx.Module):
+    """A user's own model part: defined outside jaxtow, pickled by its name only."""
+
+    factor: float = eqx.field(static=True)
+
+
+def test_a_users_own_class_in_the_static_part_is_never_keyed(cache):
+    """A class from outside jaxtow and the libraries the code digest covers would be keyed
+    by its name, so an edited definition would find the old program: such a call is not
+    cached at all."""
+
+    @pc.persistent
+    @eqx.filter_jit
+    def scaled(scale, x):
+        return scale.factor * x
+
+    np.testing.assert_array_equal(scaled(_Scale(2.0), jnp.arange(2.0)), [0.0, 2.0])
+    assert _files(cache, "program") == [] and _files(cache, "skip") == []
+    assert pc._key("f", jt.presets.barge_2b(), None, []) is not None  # jaxtow's own: keyed
+
+
 def test_a_program_with_a_host_callback_runs_as_it_is(cache):
     """A run-time check (`equinox.error_if`, a host callback) cannot be exported: the call
     runs directly, raises as it should, and a marker keeps later runs from trying again."""
