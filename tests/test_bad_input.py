@@ -487,6 +487,7 @@ def test_a_run_writes_its_manifest(tmp_path, monkeypatch):
     import json
 
     import jaxtow.cli.map as M
+    import jaxtow.cli.study as S
     from jaxtow.cli import main
 
     def writes(args):
@@ -500,6 +501,13 @@ def test_a_run_writes_its_manifest(tmp_path, monkeypatch):
     assert run["options"]["param"] == [["l0", "1", "2", "3"]]
     assert run["versions"]["jax"] and "EA" in run["estimates"]
     assert run["started"] <= run["finished"]
+
+    monkeypatch.setattr(S, "cmd_study", writes)
+    main(["study", "barge2a", "--out", str(tmp_path / "ok"), "--no-compile-cache"])
+    run = json.loads((tmp_path / "ok" / "barge2a_run.json").read_text())
+    assert run["command"] == "study" and run["options"]["tow_positional"] == "barge2a"
+    # the parser's hooks (the manifest's naming function) are not options: no memory address
+    assert not [k for k, v in run["options"].items() if "<function" in str(v)], run["options"]
 
     def fails(args):
         raise ValueError("parameter 'l0' must be > 0 and finite")

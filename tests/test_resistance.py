@@ -59,6 +59,22 @@ def test_coefficient_table_nodes_symmetry_and_errors():
         R.CoefficientTable([0.0, 1.0, 2.0, 3.0], *np.zeros((3, 4)))
 
 
+def test_coefficient_table_interpolates_with_tables_built_once():
+    """The table's interval tables are built with it (`HermiteAxis`): an evaluation is a
+    lookup of a few operations whatever the table's size, and equals the interpolant built
+    from the grid inside the evaluation (`jaxtow._interp.hermite`)."""
+    from jaxtow._interp import hermite
+
+    t = jt.presets.barge2_wind_table()
+    alpha = np.linspace(-3.0, 3.0, 41)
+    got = np.asarray(jax.vmap(t)(alpha))
+    ref = np.asarray(jax.vmap(lambda a: hermite(t.angle, t.values, a, "periodic"))(alpha))
+    np.testing.assert_allclose(got, ref, rtol=1e-13, atol=1e-15)
+    n_ops = len(jax.make_jaxpr(t)(0.3).eqns)
+    n_ref = len(jax.make_jaxpr(lambda a: hermite(t.angle, t.values, a, "periodic"))(0.3).eqns)
+    assert n_ops < 0.5 * n_ref, (n_ops, n_ref)
+
+
 def test_current_load_from_manoeuvring_derivatives(tow, barge_2a):
     L, B, T = jt.presets.BARGE2_LENGTH, jt.presets.BARGE2_BREADTH, 5.0
     c = np.asarray(tow.hull.coefficients(0.0))

@@ -53,7 +53,13 @@ class Manifest:
     def __init__(self, out, args, argv, request: str | None = None, name: str | None = None):
         self.path = Path(out) / (name or NAME)
         self.t0 = time.time()
-        options = {k: _plain(v) for k, v in vars(args).items() if k not in ("func", "fingerprint")}
+        # the parser's own hooks (the command's function, its manifest's naming) are not
+        # options: their repr would name a memory address, different in every run
+        options = {
+            k: _plain(v)
+            for k, v in vars(args).items()
+            if k not in ("func", "fingerprint") and not callable(v)
+        }
 
         self.record = {
             "command": args.command,

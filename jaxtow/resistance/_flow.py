@@ -9,7 +9,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
-from .._interp import hermite
+from .._interp import HermiteAxis
 from .._rules import POSITIVE, Checked, rule_field
 from .._vessel import Vessel
 
@@ -55,6 +55,7 @@ class CoefficientTable(eqx.Module):
 
     angle: jnp.ndarray
     values: jnp.ndarray  # (3, n)
+    axis: HermiteAxis  # the interpolation tables of the angle grid, built with the table
     label: str = eqx.field(static=True, default="")
     illustrative: bool = eqx.field(static=True, default=False)
 
@@ -76,6 +77,9 @@ class CoefficientTable(eqx.Module):
             if abs(c[0] - c[-1]) > 1e-12 * max(1.0, np.max(np.abs(c))):
                 raise ValueError(f"parameter {name!r} must have equal values at -pi and pi")
         self.angle, self.values = jnp.asarray(a), jnp.asarray(vals)
+        # the grid's interval tables once, here: built inside every evaluation they were a
+        # tenth of the operations of a force model's trace (and of its compile)
+        self.axis = HermiteAxis(a, "periodic")
         self.label, self.illustrative = label, illustrative
 
     @classmethod
@@ -107,7 +111,7 @@ class CoefficientTable(eqx.Module):
         )
 
     def __call__(self, alpha):
-        return hermite(self.angle, self.values, _wrap(alpha), "periodic")
+        return self.axis(self.values, _wrap(alpha))
 
 
 class ManoeuvringCoefficients(Checked):
