@@ -12,7 +12,7 @@ the heading residual (thesis eqs 6.17-6.23 generalised; docs/model.md section 4)
     F(ψ) = N(ψ) − x_p' Y(ψ) = 0.
 
 `equilibria` brackets every sign change of F on a fine ψ grid and refines each root with
-optimistix (bisection, then Newton polish) to machine precision, so linearisation happens
+bisection to machine precision (its derivative the implicit one), so linearisation happens
 exactly at the equilibrium (the thesis's ±0.5° rounding, section 7.4.3, is removed).
 Roots where F touches zero without changing sign (exactly at a pitchfork or fold) are not
 bracketed; away from such points every root is found.
@@ -35,7 +35,7 @@ from jaxtyping import Array, Bool, Float, Int
 
 from ._dynamics import TowModel, force_breakdown, vector_field
 from ._program_cache import cached_call
-from ._roots import bisect_fixed, brackets, polish
+from ._roots import bisected_root, brackets
 from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._towline import Towline
 from .forces._base import NoExternalForce
@@ -44,6 +44,12 @@ from .forces._base import NoExternalForce
 #: symmetric sea it lies at ψ = 0 to the solver's precision; wind, waves or current from an
 #: angle move it a little. `straight_behind` is the one definition.
 STRAIGHT_LIMIT = math.radians(1.0)
+
+#: The towline tension T' at or below which an equilibrium's line counts as slack: the
+#: round-off of the force balance. The bisection finds a heading to 3.6e-15 rad, so a
+#: towline that needs no pull (an external force that cancels the resistance) is left with
+#: a tension of that order, 1e-15 times the force scale, where an exact root has none.
+SLACK_TENSION = 1e-12
 
 
 def straight_behind(psi, found):
@@ -72,7 +78,7 @@ class Equilibria(eqx.Module):
     - ``psi``, ``gamma`` [rad], ``tension`` T', ``length`` l';
     - ``found``: the slot holds a root (padding slots repeat a found root);
     - ``converged``: the root finder succeeded;
-    - ``taut``: T' > 0 (the towline is not slack);
+    - ``taut``: T' > `SLACK_TENSION` (the towline is not slack);
     - ``behind_tug``: |γ| < π/2;
     - ``in_range``: |ψ| <= model.psi_max (inside the manoeuvring model's range);
     - ``branch``: −1, 0, +1 (see module docstring);
@@ -174,6 +180,7 @@ def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
         state
     )
     branch = jnp.where(straight_behind(psi, found), 0, jnp.sign(psi)).astype(jnp.int32)
+    branch = jnp.where(found, branch, branch[0])  # padding slots repeat the first root
     return Equilibria(
         state=state,
         psi=psi,
@@ -182,7 +189,7 @@ def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
         length=length,
         found=found,
         converged=converged & jnp.isfinite(psi),
-        taut=T > 0,
+        taut=T > SLACK_TENSION,
         behind_tug=jnp.cos(gamma) > 0,
         in_range=jnp.abs(psi) <= model.psi_max,
         branch=branch,
@@ -192,21 +199,18 @@ def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
 
 
 def bisection_atol(dtype) -> float:
-    """The heading tolerance of the equilibrium bisection [rad]: 1e-13 in float64, and 16 ulp
-    of a heading of order one in float32 (1.9e-6), whose resolution 1e-13 is far below."""
-    return max(1e-13, 16.0 * float(jnp.finfo(dtype).eps))
+    """The heading tolerance of the equilibrium bisection [rad]: 16 ulp of a heading of order
+    one (3.6e-15 in float64, 1.9e-6 in float32), the precision of a Newton step there."""
+    return 16.0 * float(jnp.finfo(dtype).eps)
 
 
 def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, steps: int, enough: bool):
     """Root of F on [lo, hi] (where F takes the values ``f_lo``, ``f_hi``) to machine
-    precision: ``steps`` halvings of the bracket (`jaxtow._roots.bisect_fixed`: F traced
-    once, no solver), then a two-step Newton polish (`jaxtow._roots.polish`), which also
-    carries the derivative (at a root a Newton step's derivative with respect to the
-    parameters is the implicit one, whatever the bisection's). ``enough``: whether the
-    halvings reach the bisection tolerance (else the root is not ``converged``)."""
-    sign = jnp.where(f_lo < 0, 1.0, -1.0)  # sign * F rises through the bracket
-    a, b = bisect_fixed(lambda x: sign * _residual(x, model) >= 0, lo, hi, steps)
-    psi = polish(_residual, 0.5 * (a + b), model, steps=2, lower=lo, upper=hi)
+    precision: ``steps`` halvings of the bracket (`jaxtow._roots.bisected_root`: F traced
+    once, no solver), whose derivative with respect to the parameters is the implicit one
+    by its own rule (traced only where the program is differentiated). ``enough``: whether
+    the halvings reach the bisection tolerance (else the root is not ``converged``)."""
+    psi = bisected_root(_residual, lo, hi, model, steps=steps, rising=f_lo < 0)
     bracketed = (f_lo < 0) != (f_hi < 0)
     return jnp.where(exact, lo, psi), (bracketed & enough) | exact
 
@@ -349,7 +353,7 @@ def analytic_equilibria(model: TowModel, *, throw: bool = True) -> Equilibria:
         length=length,
         found=found,
         converged=jnp.ones(3, bool),
-        taut=T > 0,
+        taut=T > SLACK_TENSION,
         behind_tug=jnp.cos(gamma) > 0,
         in_range=jnp.abs(psi) <= model.psi_max,
         branch=branch,

@@ -105,25 +105,41 @@ def test_equilibrium_implicit_gradient(barge_2a):
     assert g == pytest.approx(fd, rel=1e-6)
 
 
-def test_polish_is_newton_with_the_implicit_derivative():
-    """The fixed-step Newton polish after the bisection: quadratic convergence from a
-    bracketed start, iterates kept inside the bracket, and a derivative with respect to the
-    parameters equal to the implicit one (−∂_a f / ∂_x f) at the root."""
-    from jaxtow._roots import bisect, polish
+def test_bisected_root_has_the_implicit_derivative():
+    """The fixed halvings of a bracket (`bisected_root`): the root to the bracket's final
+    width, a derivative with respect to the parameters equal to the implicit one
+    (−∂_a f / ∂_x f) at the root, forward and reverse, also under vmap over brackets; a
+    program that is not differentiated traces the function only for its value."""
+    from jaxtow._roots import bisect, bisected_root
 
     def f(x, a):
         return x**3 - a
 
-    x0 = jnp.asarray(1.26)
     root = 2.0 ** (1 / 3)
-    e1 = abs(float(polish(f, x0, 2.0, steps=1)) - root)
-    assert 1e-10 < e1 < (1.26 - root) ** 2  # quadratic: 8e-5 -> 5e-9
-    assert float(polish(f, x0, 2.0, steps=2)) == pytest.approx(root, abs=1e-15)
-    # clipped to the bracket: a flat start would jump far outside it
-    x = polish(lambda x, a: jnp.tanh(x - a), jnp.asarray(2.9), 0.0, steps=1, lower=2.0, upper=3.0)
-    assert float(x) == 2.0
-    g = jax.grad(lambda a: polish(f, x0, a, steps=3))(2.0)
-    assert float(g) == pytest.approx(1 / (3 * root**2), rel=1e-12)
+    x = bisected_root(f, 1.0, 2.0, 2.0, steps=52)
+    assert float(x) == pytest.approx(root, abs=4e-16)
+    falling = bisected_root(lambda x, a: a - x**3, 1.0, 2.0, 2.0, steps=52)
+    assert float(falling) == pytest.approx(root, abs=4e-16)
+    implicit = 1 / (3 * root**2)
+    assert float(jax.grad(lambda a: bisected_root(f, 1.0, 2.0, a, steps=52))(2.0)) == (
+        pytest.approx(implicit, rel=1e-12)
+    )
+    assert float(jax.jacfwd(lambda a: bisected_root(f, 1.0, 2.0, a, steps=52))(2.0)) == (
+        pytest.approx(implicit, rel=1e-12)
+    )
+    many = jax.vmap(
+        jax.grad(lambda lo, a: bisected_root(f, lo, 2.0, a, steps=52), argnums=1),
+        in_axes=(0, None),
+    )(jnp.array([0.5, 1.0, 1.2]), 2.0)
+    np.testing.assert_allclose(np.asarray(many), implicit, rtol=1e-12)
+    calls = []
+
+    def counted(x, a):
+        calls.append(1)
+        return f(x, a)
+
+    jax.make_jaxpr(lambda a: bisected_root(counted, 1.0, 2.0, a, steps=52))(2.0)
+    assert len(calls) == 2  # the sign at the bracket's end and the halvings' predicate
     # the bisection given the end values it would otherwise evaluate: the same root
     x1, ok1 = bisect(f, 1.0, 2.0, 2.0, atol=1e-14)
     x2, ok2 = bisect(f, 1.0, 2.0, 2.0, atol=1e-14, f_lo=f(1.0, 2.0), f_hi=f(2.0, 2.0))

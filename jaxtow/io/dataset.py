@@ -22,7 +22,7 @@ VARIABLES = {
     "length": ("1", "equilibrium stretched towline length l' (by L)"),
     "found": ("1", "slot holds an equilibrium (other slots are padding, values NaN)"),
     "converged": ("1", "root finder converged"),
-    "taut": ("1", "towline taut (T' > 0)"),
+    "taut": ("1", "towline taut (T' > 1e-12, the force balance's round-off)"),
     "behind_tug": ("1", "vessel behind the tug (|gamma| < pi/2)"),
     "in_range": ("1", "|psi| within the manoeuvring model's range psi_max"),
     "valid": ("1", "found, converged, taut, behind the tug and in range"),
