@@ -480,7 +480,10 @@ def stable_value(
     names = (name,) if among is None else tuple(among)
     if name not in names:
         raise ValueError(f"parameter 'among' must hold {name!r}, got {names}")
-    scan = _scan_abscissa(model, names, names.index(name), jnp.asarray(grid))
+    # the index as an array: a Python int would be a static part of the program cache's key
+    # (one exported program per name instead of one for all)
+    which = jnp.asarray(names.index(name), dtype=jnp.int32)
+    scan = _scan_abscissa(model, names, which, jnp.asarray(grid))
     a, ok = (np.asarray(x) for x in scan)
     g = np.where(ok, a + margin, np.nan)
     cross = [

@@ -142,3 +142,16 @@ def test_the_compile_cache_switch_turns_it_on_beside_its_folder(tmp_path, monkey
         assert pc._FOLDER == tmp_path / "xla-programs"
     finally:
         pc.set_folder(None)
+
+
+def test_the_advice_scans_of_every_parameter_are_one_program(cache):
+    """`design.stable_value` scans each parameter with one program whose parameter is an
+    index argument: the scans of two parameters store one program, not one each (a Python
+    index would be a static part of the key)."""
+    from jaxtow import design
+
+    model = jt.tow.load("barge2a").model()
+    names = ("l0", "xp")
+    design.stable_value(model, "l0", 0.625, 10.0, n=5, among=names)
+    design.stable_value(model, "xp", 0.0, 1.0, n=5, among=names)
+    assert len(_files(cache, "program")) == 1
