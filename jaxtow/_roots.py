@@ -10,9 +10,9 @@ derivatives of a root with respect to the parameters):
   default; the tolerance is the caller's);
 * `newton`: Newton's method with `optimistix.Newton` for scalar or vector problems, with
   the residual checked by the caller (optimistix terminates on the change of the iterate):
-  the polish of a bracketed root, the continuation corrector, the straight-behind
-  equilibrium of the design module and the shooting of periodic orbits (least squares when
-  the Jacobian is singular, ``well_posed=False``);
+  the continuation corrector, the straight-behind equilibrium of the design module and the
+  shooting of periodic orbits (least squares when the Jacobian is singular,
+  ``well_posed=False``);
 * `bisected_root`: a bracketed scalar root by a fixed number of halvings, with the implicit
   derivative as its own rule (no termination test and no solver, so the residual is traced
   once for the value; its derivative only where a program is differentiated: inside the

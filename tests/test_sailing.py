@@ -220,7 +220,8 @@ def test_yaw_rate_column_enters_the_drift_linearly_and_can_be_switched_off():
 def test_steady_form_equals_the_force_along_steady_states_and_drops_only_the_yaw_rate_term():
     """The equilibria evaluate the wave force in its `steady` form (no yaw-rate column): at
     r = 0 it equals the full force, and so does its derivative along the heading (what the
-    Newton polish uses); at r != 0 they differ by exactly the yaw-rate term."""
+    implicit derivative of the bisected root uses); at r != 0 they differ by exactly the
+    yaw-rate term."""
     from jaxtow._dynamics import force_breakdown
     from jaxtow._equilibrium import equilibrium_kinematics, hull_forces_at_heading
 
