@@ -78,7 +78,7 @@ class CoefficientTable(eqx.Module):
                 raise ValueError(f"parameter {name!r} must have equal values at -pi and pi")
         self.angle, self.values = jnp.asarray(a), jnp.asarray(vals)
         # the grid's interval tables once, here: built inside every evaluation they were a
-        # tenth of the operations of a force model's trace (and of its compile)
+        # seventh of the operations of a sea-state force model's trace (and of its compile)
         self.axis = HermiteAxis(a, "periodic")
         self.label, self.illustrative = label, illustrative
 
