@@ -210,7 +210,7 @@ def _refine(lo, hi, f_lo, f_hi, exact, model: TowModel, steps: int, enough: bool
     once, no solver), whose derivative with respect to the parameters is the implicit one
     by its own rule (traced only where the program is differentiated). ``enough``: whether
     the halvings reach the bisection tolerance (else the root is not ``converged``)."""
-    psi = bisected_root(_residual, lo, hi, model, steps=steps, rising=f_lo < 0)
+    psi = bisected_root(_residual, lo, hi, model, steps=steps, f_lo=f_lo, f_hi=f_hi)
     bracketed = (f_lo < 0) != (f_hi < 0)
     return jnp.where(exact, lo, psi), (bracketed & enough) | exact
 

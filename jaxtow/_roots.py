@@ -13,8 +13,8 @@ derivatives of a root with respect to the parameters):
   the continuation corrector, the straight-behind equilibrium of the design module and the
   shooting of periodic orbits (least squares when the Jacobian is singular,
   ``well_posed=False``);
-* `bisected_root`: a bracketed scalar root by a fixed number of halvings, with the implicit
-  derivative as its own rule (no termination test and no solver, so the residual is traced
+* `bisected_root`: a bracketed scalar root by a fixed number of halvings (the final
+  bracket's end of smaller |f|), with the implicit derivative as its own rule (no termination test and no solver, so the residual is traced
   once for the value; its derivative only where a program is differentiated: inside the
   sweep kernels and the equilibria this is what keeps their tracing and compilation short);
 * `bisect_fixed`: a fixed number of halvings of a bracket on a monotone predicate, for the
@@ -141,35 +141,51 @@ def bisect_fixed(below, lo, hi, steps: int):
 
 
 @eqx.filter_custom_jvp
-def _bisected(lo, hi, sign, args, *, fn, steps):
-    a, b = bisect_fixed(lambda x: sign * fn(x, args) >= 0, lo, hi, steps)
-    return 0.5 * (a + b)
+def _bisected(lo, hi, f_lo, f_hi, args, *, fn, steps):
+    sign = jnp.where(f_lo < 0, 1.0, -1.0)  # sign * fn rises through the bracket
+
+    def step(_, bracket):
+        a, b, fa, fb = bracket
+        m = 0.5 * (a + b)
+        fm = fn(m, args)
+        low = sign * fm >= 0  # the root is in [a, m]
+        return (
+            jnp.where(low, a, m),
+            jnp.where(low, m, b),
+            jnp.where(low, fa, fm),
+            jnp.where(low, fm, fb),
+        )
+
+    a, b, fa, fb = jax.lax.fori_loop(0, steps, step, (lo, hi, f_lo, f_hi))
+    return jnp.where(jnp.abs(fa) <= jnp.abs(fb), a, b)
 
 
 @_bisected.def_jvp
 def _bisected_jvp(primals, tangents, *, fn, steps):
-    lo, hi, sign, args = primals
-    x = _bisected(lo, hi, sign, args, fn=fn, steps=steps)
-    t_args = tangents[3]
-    if t_args is None:  # the parameters are not differentiated: the root does not move
+    lo, hi, f_lo, f_hi, args = primals
+    x = _bisected(lo, hi, f_lo, f_hi, args, fn=fn, steps=steps)
+    t_args = tangents[4]
+    f_args = None
+    if t_args is not None:
+        # implicit function: fn(x(θ), θ) = 0, so dx = −(∂_θ fn · dθ) / ∂_x fn at the root
+        _, f_args = eqx.filter_jvp(lambda a: fn(x, a), (args,), (t_args,))
+    if f_args is None:  # the parameters that move do not enter fn: the root stays
         return x, jnp.zeros_like(x)
-    # implicit function: fn(x(θ), θ) = 0, so dx = −(∂_θ fn · dθ) / ∂_x fn at the root
-    _, f_args = eqx.filter_jvp(lambda a: fn(x, a), (args,), (t_args,))
     _, f_x = jax.jvp(lambda z: fn(z, args), (x,), (jnp.ones_like(x),))
     return x, -f_args / jnp.where(f_x == 0, 1.0, f_x)
 
 
-def bisected_root(fn, lo, hi, args, *, steps: int, rising=None):
+def bisected_root(fn, lo, hi, args, *, steps: int, f_lo=None, f_hi=None):
     """The root of a scalar ``fn(x, args) = 0`` in the bracket [``lo``, ``hi``] (``fn``
-    changes sign across it) after ``steps`` halvings (`bisect_fixed`): the final bracket's
-    midpoint. ``rising``: whether ``fn`` rises through the bracket (default: from the sign
-    of ``fn(lo, args)``, one more evaluation). No tolerance test, no solver: the value
-    traces ``fn`` once. Its derivative with respect to ``args`` is the implicit one,
-    −∂_args fn / ∂_x fn at the root, by its own rule, so a program that is not
-    differentiated holds no derivative of ``fn`` at all (the Newton steps this replaced
-    carried one in every program: 1.3 s of the 3.2 s compile of a sea state's equilibria)."""
+    changes sign across it; ``f_lo``, ``f_hi`` its values there, evaluated when not given)
+    after ``steps`` halvings: the end of the final bracket where |fn| is smaller (a root on
+    a bracket's end, such as ψ = 0 of a symmetric tow, is found exactly). No tolerance
+    test, no solver: the value traces ``fn`` once. Its derivative with respect to ``args``
+    is the implicit one, −∂_args fn / ∂_x fn at the root, by its own rule, so a program that
+    is not differentiated holds no derivative of ``fn`` at all (the Newton steps this
+    replaced carried one in every program: 1.3 s of the 3.2 s compile of a sea state's
+    equilibria)."""
     lo, hi = jnp.asarray(lo, dtype=float), jnp.asarray(hi, dtype=float)
-    if rising is None:
-        rising = fn(lo, args) < 0
-    sign = jnp.where(rising, 1.0, -1.0)
-    return _bisected(lo, hi, sign, args, fn=fn, steps=steps)
+    f_lo = fn(lo, args) if f_lo is None else f_lo
+    f_hi = fn(hi, args) if f_hi is None else f_hi
+    return _bisected(lo, hi, f_lo, f_hi, args, fn=fn, steps=steps)

@@ -139,7 +139,17 @@ def test_bisected_root_has_the_implicit_derivative():
         return f(x, a)
 
     jax.make_jaxpr(lambda a: bisected_root(counted, 1.0, 2.0, a, steps=52))(2.0)
-    assert len(calls) == 2  # the sign at the bracket's end and the halvings' predicate
+    assert len(calls) == 3  # the values at the bracket's ends and the halvings' step
+    calls.clear()
+    jax.make_jaxpr(lambda a: bisected_root(counted, 1.0, 2.0, a, steps=52, f_lo=-1.0, f_hi=6.0))(
+        2.0
+    )
+    assert len(calls) == 1  # given the ends' values: the step's only
+    # a root on the bracket's end is found exactly; a parameter that fn ignores moves nothing
+    assert float(bisected_root(lambda x, a: x, -1.0, 0.0, 2.0, steps=52)) == 0.0
+    assert (
+        float(jax.grad(lambda a: bisected_root(lambda x, b: x, -1.0, 0.5, a, steps=52))(2.0)) == 0.0
+    )
     # the bisection given the end values it would otherwise evaluate: the same root
     x1, ok1 = bisect(f, 1.0, 2.0, 2.0, atol=1e-14)
     x2, ok2 = bisect(f, 1.0, 2.0, 2.0, atol=1e-14, f_lo=f(1.0, 2.0), f_hi=f(2.0, 2.0))
