@@ -48,7 +48,7 @@ STRAIGHT_LIMIT = math.radians(1.0)
 #: The towline tension T' at or below which an equilibrium's line counts as slack: the
 #: round-off of the force balance. The bisection finds a heading to 3.6e-15 rad, so a
 #: towline that needs no pull (an external force that cancels the resistance) is left with
-#: a tension of that order, 1e-15 times the force scale, where an exact root has none.
+#: a tension of round-off size (1e-17 of the force scale in the tests), not exactly none.
 SLACK_TENSION = 1e-12
 
 

@@ -1,4 +1,7 @@
-"""Shared test helpers: models, central finite differences."""
+"""Shared test helpers: models, central finite differences, the benchmark scripts."""
+
+import importlib.util
+from pathlib import Path
 
 import jax.numpy as jnp
 import numpy as np
@@ -38,3 +41,16 @@ def assert_png_has_content(path, min_ink: float = 0.01):
     ink = np.mean(np.any(np.abs(img - background) > 0.05, axis=-1))
     assert img.shape[0] > 100 and img.shape[1] > 100, f"{path}: {img.shape} is not a figure"
     assert ink > min_ink, f"{path}: only {ink:.3%} of the pixels are drawn"
+
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def benchmark_script(name: str):
+    """``benchmarks/<name>.py`` imported as a module (the scripts are no package), for the
+    tests that hold a committed table or data file to what its script computes."""
+    spec = importlib.util.spec_from_file_location(name, ROOT / "benchmarks" / f"{name}.py")
+    assert spec is not None and spec.loader is not None
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod

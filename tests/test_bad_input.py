@@ -466,15 +466,9 @@ def test_the_full_nan_audit_finds_no_unexplained_nan():
     """The scale audit itself: 10^6 calm points and 10^5 points in regular waves over wide
     ranges (benchmarks/nan_audit.py, whose committed result is
     benchmarks/data/perf/nan_audit.json), through the layered sweep, datasets and io."""
-    import importlib.util
-    from pathlib import Path
+    from helpers import benchmark_script
 
-    path = Path(__file__).parents[1] / "benchmarks" / "nan_audit.py"
-    spec = importlib.util.spec_from_file_location("nan_audit", path)
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    results = mod.main([])
+    results = benchmark_script("nan_audit").main([])
     assert results["calm"]["points"] == 10**6 and results["waves"]["points"] > 9 * 10**4
     for name, r in results.items():
         assert r["unexplained"] == 0, (name, r["unexplained_variables"])

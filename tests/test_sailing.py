@@ -442,17 +442,11 @@ def test_forms_shift_a_motion_peak_once_or_twice():
 def test_forms_comparison_in_the_docs_is_reproducible():
     """docs/data/sailing_forms.json (docs/model.md section 8) equals a fresh run of
     ``python benchmarks/sailing_forms.py`` on the stored panel QTFs."""
-    import importlib.util
     import json
-    from pathlib import Path
 
-    root = Path(__file__).resolve().parents[1]
-    spec = importlib.util.spec_from_file_location(
-        "sailing_forms", root / "benchmarks" / "sailing_forms.py"
-    )
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    fresh = mod.compute()
+    from helpers import ROOT as root, benchmark_script
+
+    fresh = benchmark_script("sailing_forms").compute()
     stored = json.loads((root / "docs" / "data" / "sailing_forms.json").read_text())
     assert set(fresh) == set(stored)
     for hull, res in stored.items():

@@ -3,23 +3,18 @@ computes, and jaxtow differs from the experiment as Ursell's exact theory does."
 
 from __future__ import annotations
 
-import importlib.util
 import json
 from pathlib import Path
 
 import numpy as np
 import pytest
+from helpers import benchmark_script
 
 ROOT = Path(__file__).resolve().parents[1]
-SCRIPT = ROOT / "benchmarks" / "strip_vugts.py"
 
 
 def load_script():
-    spec = importlib.util.spec_from_file_location("strip_vugts", SCRIPT)
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
+    return benchmark_script("strip_vugts")
 
 
 @pytest.mark.slow
