@@ -115,12 +115,12 @@ def at_tug_speed(model: TowModel, u_tug) -> TowModel:
     POSITIVE.check("u_tug", u_tug)
     u_tug = jnp.asarray(u_tug, dtype=float)
     towline = model.towline.rescaled((ref.u_tug / u_tug) ** 2)
-    model = eqx.tree_at(lambda m: m.towline, model, _like(model.towline, towline))
+    model = eqx.tree_at(lambda m: m.towline, model, typed_like(model.towline, towline))
     n = len(all_scales(model))
     return eqx.tree_at(lambda m: [s.u_tug for s in all_scales(m)], model, [u_tug] * n)
 
 
-def _like(old, new):
+def typed_like(old, new):
     """``new`` with each concrete scalar leaf as weakly typed as ``old``'s: a number times a
     strongly typed factor becomes strongly typed, and a model whose leaves differ from
     another's only in weak typing is a new argument type to every compiled kernel (a new
@@ -155,15 +155,23 @@ class ForceBreakdown(eqx.Module):
         return self.manoeuvring + self.towline + self.coupling + self.external
 
 
+def towline_force(y, towline) -> tuple[Float[Array, "3"], Float[Array, ""]]:
+    """The towline's pull on the vessel (X', Y', N') at state y (eqs 2.8-2.10) and its
+    tension T'."""
+    l, gamma, psi = y[3], y[4], y[5]
+    T = towline.tension(l)
+    a = gamma + psi
+    xp, yp = towline.xp, towline.yp
+    pull = jnp.stack([T * jnp.cos(a), -T * jnp.sin(a), -T * (xp * jnp.sin(a) + yp * jnp.cos(a))])
+    return pull, T
+
+
 def force_breakdown(t, y, model: TowModel, *, throw: bool = True) -> ForceBreakdown:
     """The `ForceBreakdown` of the vessel at time t and state y. ``throw``: check the
     model's parameters (see `vector_field`)."""
-    u, v, r, l, gamma, psi = (y[i] for i in range(6))
+    u, v, r = y[0], y[1], y[2]
     ves = model.vessel
-    T = model.towline.tension(l)
-    a = gamma + psi
-    xp, yp = model.towline.xp, model.towline.yp
-    towline = jnp.stack([T * jnp.cos(a), -T * jnp.sin(a), -T * (xp * jnp.sin(a) + yp * jnp.cos(a))])
+    towline, T = towline_force(y, model.towline)
     coupling = jnp.stack([(ves.m + ves.a22) * v * r, -(ves.m + ves.a11) * u * r, jnp.zeros_like(r)])
     out = ForceBreakdown(
         manoeuvring=ves.manoeuvring_forces(u, v, r),
@@ -247,5 +255,6 @@ def unchecked_vector_field(t, y, model: TowModel):
 def sway_offset(y, xp, yp=0.0):
     """Sway offset of the CoG from the tug's track, y' = l' sin γ − x_p' sin ψ (eqs 2.16,
     2.18; − y_p' cos ψ with a transverse attachment offset); the fishtailing path width is
-    its peak-to-peak value."""
-    return y[..., 3] * jnp.sin(y[..., 4]) - xp * jnp.sin(y[..., 5]) - yp * jnp.cos(y[..., 5])
+    its peak-to-peak value. NumPy in, NumPy out (a run's record, on the host)."""
+    xnp = np if isinstance(y, np.ndarray) else jnp
+    return y[..., 3] * xnp.sin(y[..., 4]) - xp * xnp.sin(y[..., 5]) - yp * xnp.cos(y[..., 5])

@@ -33,7 +33,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
-from ._dynamics import TowModel, force_breakdown, vector_field
+from ._dynamics import TowModel, force_breakdown, kinematics, towline_force, vector_field
 from ._program_cache import cached_call
 from ._roots import bisected_root, brackets
 from ._rules import check_now, guard, holds_tracers, is_concrete
@@ -114,7 +114,10 @@ class Equilibria(eqx.Module):
         """Eager: keep the slots where `mask` (a concrete boolean array) holds."""
 
         keep = np.flatnonzero(np.asarray(mask))
-        return jax.tree_util.tree_map(lambda a: a[keep] if jnp.ndim(a) else a, self)
+        # indexed on the host (an eager jax.numpy gather compiles a program per field)
+        return jax.tree_util.tree_map(
+            lambda a: jnp.asarray(np.asarray(a)[keep]) if jnp.ndim(a) else a, self
+        )
 
     def compact(self) -> Equilibria:
         """Eager: drop the padding slots (keep ``found``)."""
@@ -160,6 +163,11 @@ def _residual(psi, model: TowModel):
 def state_from_heading(psi, model: TowModel):
     """Towline angle, tension and length that balance the forces at heading ψ."""
     X, Y, _ = hull_forces_at_heading(psi, model)
+    return _balanced_state(psi, X, Y, model)
+
+
+def _balanced_state(psi, X, Y, model: TowModel):
+    """`state_from_heading` from the hull forces (X', Y') at heading ψ."""
     a = jnp.arctan2(Y, -X)  # γ + ψ: direction of the required towline pull
     T2 = X**2 + Y**2
     T = jnp.sqrt(jnp.where(T2 > 0, T2, 1.0)) * (T2 > 0)
@@ -173,12 +181,24 @@ def state_from_heading(psi, model: TowModel):
     return state, gamma, T, length
 
 
-def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
-    state, gamma, T, length = jax.vmap(state_from_heading, in_axes=(0, None))(psi, model)
-    steady = _steady(model)  # the states have r = 0
-    residual = jax.vmap(lambda y: jnp.max(jnp.abs(vector_field(0.0, y, steady, throw=False))))(
-        state
+def _state_and_residual(psi, model: TowModel):
+    """`state_from_heading` and the residual max |f(y)| of the full vector field at the
+    state, from one evaluation of the hull forces: they do not depend on the towline's
+    length and angle (`equilibrium_kinematics`), so the vector field at the state is the
+    hull forces at ψ with the towline's pull at the state (`vector_field` term by term)."""
+    y0 = equilibrium_kinematics(psi)
+    fb = force_breakdown(0.0, y0, _steady(model), throw=False)  # the state has r = 0
+    hull = fb.manoeuvring + fb.coupling + fb.external
+    state, gamma, T, length = _balanced_state(psi, hull[0], hull[1], model)
+    pull, _ = towline_force(state, model.towline)
+    f = jnp.concatenate(
+        [(hull + pull) / fb.inertia, kinematics(state, model.towline.xp, model.towline.yp)]
     )
+    return state, gamma, T, length, jnp.max(jnp.abs(f))
+
+
+def _finish(psi, found, converged, model: TowModel, n_roots) -> Equilibria:
+    state, gamma, T, length, residual = jax.vmap(_state_and_residual, in_axes=(0, None))(psi, model)
     branch = jnp.where(straight_behind(psi, found), 0, jnp.sign(psi)).astype(jnp.int32)
     branch = jnp.where(found, branch, branch[0])  # padding slots repeat the first root
     return Equilibria(

@@ -57,8 +57,16 @@ except ImportError:  # another Equinox: its trees may not round-trip; the check 
     _EQX_MISSING = object()
 
 _FOLDER: Path | None = None
-#: (key) -> (exported program, output tree) for this process
+#: (key) -> (exported program, output tree, its compiled call) for this process
 _LOADED: dict = {}
+#: XLA options of the programs run from the cache. XLA:CPU's legacy elemental emitters
+#: instead of its fusion emitters (the default since JAX 0.5): on 2 cores they compile a
+#: tow's equilibria and stability programs in about 60 % of the time and run its kernels as
+#: fast or faster (docs/benchmarks.md, "Compile options"). GPU backends ignore the option.
+#: An XLA that no longer knows an option refuses it with an error, and the programs then
+#: compile with XLA's defaults (`_OPTIONS_OK`).
+COMPILER_OPTIONS: dict = {"xla_cpu_use_fusion_emitters": False}
+_OPTIONS_OK = True
 
 
 def set_folder(folder) -> None:
@@ -236,9 +244,30 @@ def cached_call(name: str, fn, *args, **kwargs):
             # drops the outputs' weak typing, and a run that saw the fresh one would type them
             # differently from the next and compile what follows it twice
             hit = _parse(hit)
+        hit = (*hit, _compiled_call(hit[0]))
         _LOADED[key] = hit
-    exported, out_tree = hit
-    return jax.tree_util.tree_unflatten(out_tree, exported.call(*leaves))
+    exported, out_tree, call = hit
+    return jax.tree_util.tree_unflatten(out_tree, _run(call, exported, leaves))
+
+
+def _compiled_call(exported):
+    """``exported.call`` as a program compiled with `COMPILER_OPTIONS`."""
+    options = COMPILER_OPTIONS if _OPTIONS_OK else None
+    return jax.jit(exported.call, compiler_options=options or None)
+
+
+def _run(call, exported, leaves):
+    """``call(*leaves)``; where XLA refuses `COMPILER_OPTIONS` (an XLA without one of them),
+    the program with XLA's defaults, and every later one too."""
+    global _OPTIONS_OK
+    try:
+        return call(*leaves)
+    except jax.errors.JaxRuntimeError as e:
+        if not (_OPTIONS_OK and COMPILER_OPTIONS and "compile option" in str(e)):
+            raise
+        _OPTIONS_OK = False
+        _LOADED.clear()  # their calls hold the options
+        return exported.call(*leaves)
 
 
 class persistent:  # noqa: N801 (used as a decorator)

@@ -80,8 +80,14 @@ class Rule:
             raise ParameterError(name, f"parameter {name!r} {self.requirement}, got {v!r}")
 
     def traced(self, name: str, x) -> tuple:
-        """Traced: the ``(predicate, message)`` pair for `guard` (predicate True = bad)."""
-        return jnp.any(~self.ok(jnp, jnp.asarray(x))), f"parameter {name!r} {self.requirement}"
+        """Traced: the ``(predicate, message)`` pair for `guard` (predicate True = bad). A
+        concrete ``x`` (an eager check: `check_now`, `guard`) is tested with NumPy, which
+        compiles nothing (each eager `jax.numpy` operation is a program of its own)."""
+        message = f"parameter {name!r} {self.requirement}"
+        if is_concrete(x):
+            with np.errstate(invalid="ignore"):
+                return np.any(~self.ok(np, np.asarray(x))), message
+        return jnp.any(~self.ok(jnp, jnp.asarray(x))), message
 
 
 FINITE = Rule("must be finite", lambda xp, x: xp.isfinite(x))

@@ -16,13 +16,16 @@ truncation at t = 16 starts to show; the drift formulas never go there (they use
 from __future__ import annotations
 
 import jax.numpy as jnp
+import numpy as np
 from jax.scipy.special import i1e
 from jaxtyping import Array, ArrayLike, Float
 
 _H = 0.05
-_T = jnp.arange(0.0, 16.0 + _H / 2, _H)
-_W = jnp.full(_T.shape, _H).at[0].set(_H / 2)
-_COSH = jnp.cosh(_T)
+# NumPy constants: built at import with jax.numpy, each would compile a program
+_T = np.arange(0.0, 16.0 + _H / 2, _H)
+_W = np.full(_T.shape, _H)
+_W[0] = _H / 2
+_COSH = np.cosh(_T)
 
 
 def k1e(x: ArrayLike) -> Float[Array, "..."]:

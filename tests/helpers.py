@@ -54,3 +54,40 @@ def benchmark_script(name: str):
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
+
+
+class count_compiles:
+    """Counts JAX's backend compiles and jaxpr traces (and their seconds) inside a
+    ``with`` block, through `jax.monitoring`'s duration events."""
+
+    COMPILE = "/jax/core/compile/backend_compile_duration"
+    TRACE = "/jax/core/compile/jaxpr_trace_duration"
+
+    def __enter__(self):
+        import jax.monitoring
+
+        self.compiles = self.traces = 0
+        self.compile_s = self.trace_s = 0.0
+        self.on = True
+
+        def listen(event, seconds, **_):
+            if not self.on:
+                return
+            if event == self.COMPILE:
+                self.compiles += 1
+                self.compile_s += seconds
+            elif event == self.TRACE:
+                self.traces += 1
+                self.trace_s += seconds
+
+        jax.monitoring.register_event_duration_secs_listener(listen)
+        return self
+
+    def __exit__(self, *exc):
+        self.on = False  # JAX keeps its listeners; this one stops counting
+
+    def __repr__(self):
+        return (
+            f"{self.compiles} compiles ({self.compile_s:.1f} s), "
+            f"{self.traces} traces ({self.trace_s:.1f} s)"
+        )

@@ -1,5 +1,7 @@
 """Equilibria (thesis eqs 6.7-6.13 and the heading residual of docs/model.md section 4)."""
 
+import dataclasses
+
 import jax
 import jax.numpy as jnp
 import numpy as np
@@ -154,3 +156,23 @@ def test_bisected_root_has_the_implicit_derivative():
     x1, ok1 = bisect(f, 1.0, 2.0, 2.0, atol=1e-14)
     x2, ok2 = bisect(f, 1.0, 2.0, 2.0, atol=1e-14, f_lo=f(1.0, 2.0), f_hi=f(2.0, 2.0))
     assert bool(ok1) and bool(ok2) and float(x1) == float(x2)
+
+
+def test_the_residual_is_the_full_vector_field_at_the_state():
+    """`Equilibria.residual` is computed from the hull forces the state is built from (one
+    evaluation of the force model): it equals max |f(y)| of `jaxtow.vector_field` evaluated
+    afresh at the state, off the equilibria as well as on them, in calm water and in a sea
+    state with waves, wind and current from the side."""
+    from jaxtow._equilibrium import _state_and_residual, _steady, state_from_heading
+
+    tow = jt.tow.load("barge2a")
+    sea = tow.sea_states[0]
+    sea = dataclasses.replace(sea, wave_angle=0.4, wind_angle=-0.3, current_angle=0.2)
+    for m in (tow.model(), tow.sea_model(sea)):
+        for psi in (-0.6, -0.05, 0.0, 0.2):
+            state, gamma, T, length, residual = _state_and_residual(jnp.asarray(psi), m)
+            expected = state_from_heading(jnp.asarray(psi), m)
+            np.testing.assert_array_equal(state, expected[0])
+            np.testing.assert_array_equal(T, expected[2])
+            f = jt.vector_field(0.0, state, _steady(m), throw=False)
+            np.testing.assert_allclose(residual, jnp.max(jnp.abs(f)), rtol=1e-13, atol=1e-16)

@@ -155,3 +155,51 @@ def test_the_advice_scans_of_every_parameter_are_one_program(cache):
     design.stable_value(model, "l0", 0.625, 10.0, n=5, among=names)
     design.stable_value(model, "xp", 0.0, 1.0, n=5, among=names)
     assert len(_files(cache, "program")) == 1
+
+
+def test_the_skeg_advice_runs_the_calm_water_programs(cache):
+    """The skeg advice's hulls (the vessel with a skeg span's derivatives) are typed as the
+    tow file's vessel, so their equilibria and stability run the calm-water model's two
+    programs rather than two of their own."""
+    from jaxtow.studies._advice import _with_skegs
+    from jaxtow.studies._conditions import equilibria_and_stability
+
+    tow = jt.tow.load("barge2a")
+    model = tow.model()
+    equilibria_and_stability(model)
+    assert len(_files(cache, "program")) == 2
+    L, T = tow.scales.length, tow.scales.draft
+    skegs = eqx.tree_at(
+        lambda m: m.vessel, model, _with_skegs(model.vessel, L, T, 2, 7.6, 3.1, 0.0)
+    )
+    assert float(skegs.vessel.Yv) != float(model.vessel.Yv)
+    equilibria_and_stability(skegs)
+    assert len(_files(cache, "program")) == 2
+
+
+def test_programs_compile_with_the_options_and_without_them_where_xla_refuses(cache, monkeypatch):
+    """Programs from the cache are compiled with `COMPILER_OPTIONS`; an option the
+    installed XLA does not know makes them compile with XLA's defaults instead (the same
+    numbers), and no later program tries it again."""
+    model = jt.tow.load("barge2a").model()
+    seen = []
+    jit = jax.jit
+
+    def spy(fn, **kw):
+        seen.append(kw.get("compiler_options"))
+        return jit(fn, **kw)
+
+    monkeypatch.setattr(pc.jax, "jit", spy)
+    good = jt.padded_equilibria(model, n_grid=201)
+    assert pc.COMPILER_OPTIONS and seen[-1] == pc.COMPILER_OPTIONS
+    pc._LOADED.clear()
+    monkeypatch.setattr(pc, "COMPILER_OPTIONS", {"xla_option_jaxtow_never_heard_of": True})
+    monkeypatch.setattr(pc, "_OPTIONS_OK", True)
+    fallback = jt.padded_equilibria(model, n_grid=201)
+    assert pc._OPTIONS_OK is False
+    for a, b in zip(jax.tree.leaves(good), jax.tree.leaves(fallback)):
+        np.testing.assert_allclose(np.asarray(a), np.asarray(b), rtol=1e-12, atol=1e-14)
+    pc._LOADED.clear()
+    again = jt.padded_equilibria(model, n_grid=201)
+    assert seen[-1] is None  # the defaults from then on
+    np.testing.assert_array_equal(np.asarray(again.psi), np.asarray(fallback.psi))

@@ -90,3 +90,22 @@ def test_rules_of_tables_apply_to_sweeps_of_their_parameters():
     assert rule_of(tug, "efficiency") is not None
     with pytest.raises(ValueError, match="'efficiency'"):
         jt.resistance.Tug(bollard_pull=1e5, free_speed=6.0, efficiency=1.5)
+
+
+def test_eager_checks_compile_nothing():
+    """The checks of a concrete model (`check_now`, an eager `guard`) are evaluated with
+    NumPy: no program is compiled for them (each eager `jax.numpy` operation would be one),
+    and a bad value is still refused with the parameter named."""
+    from helpers import count_compiles
+
+    from jaxtow._rules import check_now
+
+    tow = jt.tow.load("barge2a")
+    model = tow.sea_model(tow.sea_states[0])
+    check_now(model)  # the first call may compile nothing either; count a fresh model's
+    bad = eqx.tree_at(lambda m: m.towline.xp, _model(), jnp.asarray(1.5))
+    with count_compiles() as n:
+        check_now(tow.sea_model(tow.sea_states[-1]))
+        with pytest.raises(ValueError, match="parameter 'xp'"):
+            check_now(bad)
+    assert n.compiles == 0, n

@@ -23,6 +23,7 @@ import jax.numpy as jnp
 import numpy as np
 
 from .. import design, guidelines, presets
+from .._dynamics import typed_like
 from .._equilibrium import equilibria, straight_behind
 from .._parameters import get_parameter, with_parameters
 from .._roots import bisect, bisect_fixed
@@ -143,11 +144,14 @@ def _with_skegs(vessel, L, T, count, chord, span, base_span):
         else None
     )
     names = ("Yv", "Yr", "Nv", "Nr")
+    present = tuple(getattr(vessel, k) for k in names)
     new = tuple(
-        jnp.asarray(getattr(vessel, k) + getattr(add, k) - (getattr(old, k) if old else 0.0), float)
-        for k in names
+        jnp.asarray(p + getattr(add, k) - (getattr(old, k) if old else 0.0), float)
+        for p, k in zip(present, names)
     )
-    return eqx.tree_at(lambda x: (x.Yv, x.Yr, x.Nv, x.Nr), vessel, new)
+    # typed as the present values (weakly, as a tow file's are): the equilibria and
+    # stability programs of the calm-water model then serve every span
+    return eqx.tree_at(lambda x: (x.Yv, x.Yr, x.Nv, x.Nr), vessel, typed_like(present, new))
 
 
 def _smallest_span(c_of, follows, lo, hi) -> float:

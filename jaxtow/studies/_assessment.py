@@ -349,20 +349,22 @@ def _hull_drift(tow) -> tuple[DriftRecord, tuple]:
     mean drift in each sea state at rest and at the design speed (no model needed)."""
     q = tow.drift.qtf()
     seas = [s for s in tow.sea_states if float(s.hs) > 0]
-    spectra = (
-        np.stack(
-            [np.asarray(Jonswap(hs=s.hs, tp=s.tp, gamma=s.gamma)(DEFAULT_OMEGA)) for s in seas]
-        )
+    # the seas' spectra, stacked on the host (float64, as the spectra's own fields) and
+    # evaluated in the program
+    spectra = [Jonswap(hs=s.hs, tp=s.tp, gamma=s.gamma) for s in seas]
+    stacked = (
+        jax.tree.map(lambda *a: np.stack([np.asarray(x, float) for x in a]), *spectra)
         if seas
-        else np.zeros((0, DEFAULT_OMEGA.shape[0]))
+        else None
     )
     angles = np.array([float(s.wave_angle) for s in seas])
     speeds = np.array([0.0, float(tow.scales.u_tug)])
-    fx, drift, over = jax.device_get(_drift_program(q, spectra, angles, speeds, form=tow.form))
+    fx, drift, over = jax.device_get(_drift_program(q, stacked, angles, speeds, form=tow.form))
     for k, s in enumerate(seas):  # the check irregular_sailing_drift makes eagerly
         for j, u in enumerate(speeds):
             if over[k, j]:
-                _, msg = overtaken_check(DEFAULT_OMEGA, spectra[k], angles[k], u)
+                S = spectra[k](DEFAULT_OMEGA)
+                _, msg = overtaken_check(DEFAULT_OMEGA, S, angles[k], u)
                 raise ValueError(f"sea state {s.name!r}: {msg}")
     rows = [
         MeanDriftRow(
@@ -386,8 +388,12 @@ def _hull_drift(tow) -> tuple[DriftRecord, tuple]:
 def _drift_program(q, spectra, angles, speeds, *, form):
     """`_hull_drift`'s numbers as one compiled program: the head-sea surge drift on the
     table's frequencies, and the mean surge drift (and whether the sea is partly overtaken)
-    of each sea state (rows) at each speed (columns)."""
+    of each sea state (rows) at each speed (columns). ``spectra``: the seas' spectra
+    stacked along their fields (None for no sea)."""
     fx = jax.vmap(lambda x: q(x, 0.0))(q.omega)[:, 0]
+    if spectra is None:
+        return fx, jnp.zeros((0, speeds.shape[0])), jnp.zeros((0, speeds.shape[0]), bool)
+    spectra = jax.vmap(lambda sp: sp.density(DEFAULT_OMEGA))(spectra)
 
     def one(S, angle, u):
         F = irregular_sailing_drift(q, DEFAULT_OMEGA, S, angle, u, 0.0, form=form, throw=False)
