@@ -60,7 +60,7 @@ _FOLDER: Path | None = None
 #: (key) -> (exported program, output tree, its compiled call) for this process
 _LOADED: dict = {}
 #: XLA options of the programs run from the cache. XLA:CPU's legacy elemental emitters
-#: instead of its fusion emitters (the default since JAX 0.5): on 2 cores they compile a
+#: instead of the fusion emitters it uses by default: on 2 cores they compile a
 #: tow's equilibria and stability programs in about 60 % of the time and run its kernels as
 #: fast or faster (docs/benchmarks.md, "Compile options"). GPU backends ignore the option.
 #: An XLA that no longer knows an option refuses it with an error, and the programs then
