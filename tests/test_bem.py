@@ -241,6 +241,23 @@ def test_far_field_drift_equals_capytaines_own_routine():
 
 
 @needs_capytaine
+def test_the_ordered_hull_is_capytaines_merged_mesh():
+    """`symmetric_capytaine_mesh` orders jaxtow's panels by reflecting the half mesh itself;
+    the result is the mesh Capytaine's own ``merged()`` gives, vertex for vertex and panel
+    for panel (the same corners in the same order), on the box (two planes) and the raked
+    barge."""
+    from jaxtow.bem.capytaine_mesh import symmetric_capytaine_mesh
+
+    for mesh in (bem.box_barge_mesh(panel_size=4.0), bem.barge2_mesh(panel_size=3.0)):
+        hull, _, ordered = symmetric_capytaine_mesh(mesh)
+        plain = hull.merged()
+        v, f = np.asarray(plain.vertices, float), np.asarray(plain.faces, int)
+        np.testing.assert_array_equal(ordered.vertices[ordered.faces], v[f])
+        np.testing.assert_allclose(ordered.centres, np.asarray(plain.faces_centers), atol=1e-12)
+        np.testing.assert_allclose(ordered.normals, np.asarray(plain.faces_normals), atol=1e-12)
+
+
+@needs_capytaine
 def test_symmetric_solve_equals_the_plain_solve():
     """The solver on the hull's reflection planes gives the plain solve's answer: to
     round-off on the box; on the raked barge to 1e-2 of the largest value (Capytaine's

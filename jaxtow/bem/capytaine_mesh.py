@@ -78,14 +78,28 @@ def _symmetric_mesh(vertices, faces, planes, name):
     return m
 
 
+def _corners(cmesh) -> np.ndarray:
+    """The corners (n_panels, 4, 3) of every panel of the Capytaine mesh ``cmesh``, in the
+    order and orientation of its ``merged()`` form: a reflection-symmetric mesh is its half,
+    then the half mirrored about its plane with each panel's corners reversed (the normals
+    kept pointing out), as Capytaine joins them. NumPy on whole arrays: Capytaine's
+    ``merged()`` builds the joined mesh face by face and cleans it, 0.4 s for Barge 2 at
+    3 m panels."""
+    if hasattr(cmesh, "half") and hasattr(cmesh, "plane"):
+        half = _corners(cmesh.half)
+        other = half[:, ::-1].copy()
+        other[..., _PLANES[cmesh.plane]] *= -1.0
+        return np.concatenate([half, other])
+    return np.asarray(cmesh.vertices, float)[np.asarray(cmesh.faces, int)]
+
+
 def _merged_hull(cmesh, like: HullMesh) -> HullMesh:
     """A jaxtow HullMesh with the panels in the order of the Capytaine mesh ``cmesh`` (shared
     vertices merged, so that the near-field gradient sees every neighbour)."""
-    plain = cmesh.merged() if hasattr(cmesh, "merged") else cmesh
-    v = np.asarray(plain.vertices, float)
-    f = np.asarray(plain.faces, int)
+    c = _corners(cmesh)
+    v = c.reshape(-1, 3)
     _, first, inv = np.unique(np.round(v / 1e-7), axis=0, return_index=True, return_inverse=True)
-    return dataclasses.replace(like, vertices=v[first], faces=inv.reshape(-1)[f])
+    return dataclasses.replace(like, vertices=v[first], faces=inv.reshape(c.shape[:2]))
 
 
 def symmetric_capytaine_mesh(mesh: HullMesh):
