@@ -43,6 +43,25 @@ def assert_png_has_content(path, min_ink: float = 0.01):
     assert ink > min_ink, f"{path}: only {ink:.3%} of the pixels are drawn"
 
 
+def barge2_on_lines(lines: dict, scales) -> dict:
+    """Barge 2a and 2b on each towline of ``lines`` (name -> towline): for each (vessel,
+    name), the equilibrium headings [deg], and the largest real part of the eigenvalues and
+    the span of the equilibrium nearest straight behind."""
+    out = {}
+    for v in ("barge_2a", "barge_2b"):
+        for name, line in lines.items():
+            m = jt.TowModel(vessel=jt.presets.VESSELS[v](), towline=line, scales=scales)
+            e = jt.equilibria(m)
+            st = jt.stability(m, e.state)
+            k = int(np.argmin(np.abs(np.asarray(e.psi))))
+            out[v, name] = (
+                np.degrees(np.asarray(e.psi)),
+                float(st.max_real[k]),
+                float(e.length[k]),
+            )
+    return out
+
+
 ROOT = Path(__file__).resolve().parents[1]
 
 

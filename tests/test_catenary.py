@@ -7,6 +7,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import barge2_on_lines
 from scipy.optimize import brentq
 
 import jaxtow as jt
@@ -115,18 +116,7 @@ def test_barge2_on_a_600_m_steel_wire_against_the_elastic_line():
     sc = jt.presets.barge2_scales()
     cat = jt.CatenaryTowline.from_si(600.0, WIRE_WEIGHT, 2.6e8, scales=sc, xp=0.5)
     el = jt.Towline(l0=cat.l0, xp=0.5, EA=cat.EA)
-    out = {}
-    for v in ("barge_2a", "barge_2b"):
-        for name, line in (("catenary", cat), ("elastic", el)):
-            m = jt.TowModel(vessel=jt.presets.VESSELS[v](), towline=line, scales=sc)
-            e = jt.equilibria(m)
-            st = jt.stability(m, e.state)
-            k = int(np.argmin(np.abs(np.asarray(e.psi))))
-            out[v, name] = (
-                np.degrees(np.asarray(e.psi)),
-                float(st.max_real[k]),
-                float(e.length[k]),
-            )
+    out = barge2_on_lines({"catenary": cat, "elastic": el}, sc)
     for v in ("barge_2a", "barge_2b"):
         np.testing.assert_allclose(out[v, "catenary"][0], out[v, "elastic"][0], atol=1e-6)
         assert out[v, "catenary"][2] < out[v, "elastic"][2] < cat.l0 * 1.01

@@ -7,6 +7,7 @@ import jax
 import jax.numpy as jnp
 import numpy as np
 import pytest
+from helpers import barge2_on_lines
 from scipy.optimize import root
 
 import jaxtow as jt
@@ -222,18 +223,7 @@ def test_barge2_on_wire_with_a_chain_pennant():
     wire, ch = lines.wire_rope(0.076), lines.chain(0.076)
     comp = lines.composite([(ch, 50.0), (wire, 600.0)], scales=sc, xp=0.5)
     alone = wire.towline(650.0, scales=sc, xp=0.5)
-    out = {}
-    for v in ("barge_2a", "barge_2b"):
-        for name, line in (("pennant", comp), ("wire", alone)):
-            m = jt.TowModel(vessel=jt.presets.VESSELS[v](), towline=line, scales=sc)
-            e = jt.equilibria(m)
-            st = jt.stability(m, e.state)
-            k = int(np.argmin(np.abs(np.asarray(e.psi))))
-            out[v, name] = (
-                np.degrees(np.asarray(e.psi)),
-                float(st.max_real[k]),
-                float(e.length[k]),
-            )
+    out = barge2_on_lines({"pennant": comp, "wire": alone}, sc)
     for v in ("barge_2a", "barge_2b"):
         np.testing.assert_allclose(
             np.sort(out[v, "pennant"][0]), np.sort(out[v, "wire"][0]), atol=1e-6
