@@ -25,6 +25,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
+from ._program_cache import host_program
 from ._rules import POSITIVE, Checked, guard, in_range, is_concrete, rule_field
 from ._towline import AbstractTowline
 from ._units import Scales
@@ -240,11 +241,16 @@ def vector_field(
             f"y must be the state (u', v', r', l', gamma, psi) of shape (6,), got shape "
             f"{y.shape} (vmap the vector field over a batch of states)"
         )
+    out = _vector_field(t, y, model)
+    return guard(out, model.checks()) if throw else out
+
+
+@host_program()
+def _vector_field(t, y, model: TowModel):
     fb = force_breakdown(t, y, model, throw=False)
-    out = jnp.concatenate(
+    return jnp.concatenate(
         [fb.total / fb.inertia, kinematics(y, model.towline.xp, model.towline.yp)]
     )
-    return guard(out, model.checks()) if throw else out
 
 
 def unchecked_vector_field(t, y, model: TowModel):

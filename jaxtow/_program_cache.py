@@ -31,6 +31,10 @@ compilation cache.
 Only host-level entry points use it (a sweep's chunks, a condition's equilibria and
 stability): an exported program carries no derivative rules, so nothing that is
 differentiated goes through it.
+
+`host_program` is the in-memory counterpart for the library's public functions called
+eagerly (a notebook's ``jt.eigenvalues(model, y)``): one compiled program instead of their
+operations one by one.
 """
 
 from __future__ import annotations
@@ -38,16 +42,20 @@ from __future__ import annotations
 import functools
 import hashlib
 import importlib.metadata as md
+import inspect
 import io
 import os
 import pickle
 import shutil
 import tempfile
 import types
+from collections.abc import Callable
 from pathlib import Path
+from typing import TypeVar, cast
 
 import equinox as eqx
 import jax
+import numpy as np
 from jax import export
 from jax.core import Tracer
 
@@ -303,3 +311,44 @@ def _export(fn, static, treedef, leaves):
     except Exception:  # a host callback, an unexportable custom call, an unpicklable output
         return None
     return blob
+
+
+F = TypeVar("F", bound=Callable)
+#: What `host_program` passes to its program: concrete arrays and Python numbers.
+_CONCRETE = (jax.Array, np.ndarray, np.generic, bool, int, float, complex)
+
+
+def host_program(*, static_argnames: tuple[str, ...] = ()) -> Callable[[F], F]:
+    """Decorator: the function compiled as one program (`jax.jit`, ``static_argnames``
+    static) where it is called at host level, no traced array among its arguments; the
+    function itself where one is traced (under the caller's jit, grad or vmap, whose program
+    it joins as before) or where an argument is no array (a table given as a Python
+    function, say).
+
+    Called eagerly, a function of hundreds of small operations (a drift table's look-ups, a
+    Jacobian by forward-mode autodiff, eigenvalues) compiles each operation on its first
+    use and dispatches them one by one on every call: 0.7-3.6 s for a first call and up to
+    90 ms for the next, measured on 2 cores (`benchmarks/bench_first_call.py`). As one
+    program it compiles once per static options and argument shapes and then runs in well
+    under a millisecond. Python numbers among the arguments are traced (weakly typed), so
+    another value reuses the program. The function holds no value checks of its own (under
+    the program they would be host callbacks, or see no values): its public function checks
+    the concrete result (`jaxtow._rules.guard`) and its grids before the program, and raises
+    the same `ValueError` as before."""
+
+    def wrap(fn: F) -> F:
+        jitted = jax.jit(fn, static_argnames=static_argnames)
+        names = tuple(inspect.signature(fn).parameters)
+
+        @functools.wraps(fn)
+        def call(*args, **kwargs):
+            dynamic = [a for n, a in zip(names, args) if n not in static_argnames]
+            dynamic += [a for n, a in kwargs.items() if n not in static_argnames]
+            leaves = jax.tree_util.tree_leaves(dynamic)
+            if all(isinstance(x, _CONCRETE) and not isinstance(x, Tracer) for x in leaves):
+                return jitted(*args, **kwargs)
+            return fn(*args, **kwargs)
+
+        return cast(F, call)
+
+    return wrap

@@ -15,6 +15,7 @@ import jax.numpy as jnp
 from jaxtyping import Array, Bool, Complex, Float, Int
 
 from ._dynamics import TowModel, unchecked_vector_field
+from ._program_cache import host_program
 from ._roots import bisect_fixed
 from ._rules import guard
 
@@ -36,8 +37,13 @@ def jacobian(
 ) -> Float[Array, "6 6"]:
     """A = ∂f/∂y of the tow vector field at state y (forward-mode autodiff). ``throw``:
     check the model's parameters (see `jaxtow.vector_field`)."""
-    A = jax.jacfwd(unchecked_vector_field, argnums=1)(t, jnp.asarray(y), model)
+    A = _jacobian(model, y, t)
     return guard(A, model.checks()) if throw else A
+
+
+@host_program()
+def _jacobian(model: TowModel, y, t):
+    return jax.jacfwd(unchecked_vector_field, argnums=1)(t, jnp.asarray(y), model)
 
 
 EIG_METHODS = ("lapack", "polynomial")
@@ -72,8 +78,13 @@ def eigenvalues(
     `spectral_abscissa` is faster than both. ``throw``: check the model's parameters (see
     `jaxtow.vector_field`).
     """
-    lam = matrix_eigenvalues(jacobian(model, y, throw=False), method)
+    lam = _eigenvalues(model, y, method)
     return guard(lam, model.checks()) if throw else lam
+
+
+@host_program(static_argnames=("method",))
+def _eigenvalues(model: TowModel, y, method: str | None):
+    return matrix_eigenvalues(jacobian(model, y, throw=False), method)
 
 
 def matrix_eigenvalues(A: Float[Array, "n n"], method: str | None = None) -> Complex[Array, " n"]:
@@ -105,8 +116,13 @@ def max_real_eigenvalue(
 ) -> Float[Array, ""]:
     """max Re λ(∂f/∂y) at y: < 0 stable, > 0 unstable (thesis figs 2.6b, 6.4); ``method``:
     see `matrix_max_real_eigenvalue`; ``throw``: see `jaxtow.vector_field`."""
-    mr = matrix_max_real_eigenvalue(jacobian(model, y, throw=False), method)
+    mr = _max_real_eigenvalue(model, y, method)
     return guard(mr, model.checks()) if throw else mr
+
+
+@host_program(static_argnames=("method",))
+def _max_real_eigenvalue(model: TowModel, y, method: str | None):
+    return matrix_max_real_eigenvalue(jacobian(model, y, throw=False), method)
 
 
 #: Bisection steps of `spectral_abscissa`: the bracket [−R, R] (R a bound on |λ|) shrinks
@@ -300,8 +316,13 @@ def routh_hurwitz_stable(
     model: TowModel, y: Float[Array, "6"], *, throw: bool = True
 ) -> Bool[Array, ""]:
     """Routh-Hurwitz criterion: all roots in the open left half-plane (binary answer)."""
-    ok = matrix_routh_hurwitz_stable(jacobian(model, y, throw=False))
+    ok = _routh_hurwitz_stable(model, y)
     return guard(ok, model.checks()) if throw else ok
+
+
+@host_program()
+def _routh_hurwitz_stable(model: TowModel, y):
+    return matrix_routh_hurwitz_stable(jacobian(model, y, throw=False))
 
 
 def matrix_routh_hurwitz_stable(A: Float[Array, "n n"]) -> Bool[Array, ""]:
@@ -332,9 +353,14 @@ def stability(
 ) -> StabilityResult:
     """Eigenvalues, max Re λ, classification and Routh-Hurwitz verdict for each state;
     ``throw``: see `jaxtow.vector_field`."""
+    out = _stability(model, states)
+    return guard(out, model.checks()) if throw else out
+
+
+@host_program()
+def _stability(model: TowModel, states) -> StabilityResult:
     J = jax.vmap(lambda y: jacobian(model, y, throw=False))(jnp.asarray(states))
     lam = jax.vmap(matrix_eigenvalues)(J)
     mr = jnp.max(jnp.real(lam), axis=-1)
     rh = jax.vmap(matrix_routh_hurwitz_stable)(J)
-    out = StabilityResult(eigenvalues=lam, max_real=mr, stability=classify(mr), routh_hurwitz=rh)
-    return guard(out, model.checks()) if throw else out
+    return StabilityResult(eigenvalues=lam, max_real=mr, stability=classify(mr), routh_hurwitz=rh)

@@ -203,3 +203,108 @@ def test_programs_compile_with_the_options_and_without_them_where_xla_refuses(ca
     again = jt.padded_equilibria(model, n_grid=201)
     assert seen[-1] is None  # the defaults from then on
     np.testing.assert_array_equal(np.asarray(again.psi), np.asarray(fallback.psi))
+
+
+# ---------------------------------------------------------------- eager calls as one program
+
+
+def _wave_inputs():
+    q = jt.presets.database("barge2")
+    w = np.linspace(0.2, 3.0, 120)
+    return q, w, jt.waves.Jonswap(hs=2.4, tp=7.0)(w)
+
+
+def test_an_eager_call_is_one_program_reused_for_new_values():
+    """A public function called eagerly compiles one program (its operations one by one
+    compiled dozens), and another value of the same shapes compiles nothing."""
+    from helpers import count_compiles
+
+    jax.clear_caches()
+    model = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.Towline(l0=2.5, xp=0.5, EA=100.0))
+    y = np.array([1.0, 0.0, 0.0, 2.5, 0.0, 0.0])
+    with count_compiles() as first:
+        jt.eigenvalues(model, y)
+    with count_compiles() as again:
+        jt.eigenvalues(model, y + 0.01)
+        jt.eigenvalues(jt.with_parameters(model, xp=0.4), y)
+    assert first.compiles == 1, first
+    assert again.compiles == 0, again
+    with jax.disable_jit(), count_compiles() as op_by_op:  # how it ran before
+        before = jt.eigenvalues(model, y + 0.01)
+    assert op_by_op.compiles > 20, op_by_op
+    np.testing.assert_allclose(jt.eigenvalues(model, y + 0.01), before, rtol=1e-12, atol=1e-12)
+
+
+@pytest.mark.slow  # the operations one by one: 20 s on 2 cores
+def test_eager_programs_equal_the_operations_run_one_by_one():
+    """The programs give the numbers the same operations give one by one (to round-off)."""
+    model = jt.TowModel(vessel=jt.presets.barge_2b(), towline=jt.Towline(l0=2.5, xp=0.5, EA=100.0))
+    eqs = jt.equilibria(model)
+    q, w, S = _wave_inputs()
+    calls = {
+        "vector_field": lambda: jt.vector_field(0.0, eqs.state[1] + 0.01, model),
+        "jacobian": lambda: jt.jacobian(model, eqs.state[1]),
+        "eigenvalues": lambda: jt.eigenvalues(model, eqs.state[0]),
+        "max_real_eigenvalue": lambda: jt.max_real_eigenvalue(model, eqs.state[0], "routh"),
+        "stability": lambda: jt.stability(model, eqs.state).max_real,
+        "routh_hurwitz_stable": lambda: jt.routh_hurwitz_stable(model, eqs.state[2]),
+        "qtf": lambda: q(0.9, 0.3),
+        "sailing_drift": lambda: jt.drift.sailing_drift(q, 0.9, 0.2, u=2.0, v=0.3, r=0.01),
+        "wave_drift_damping": lambda: jt.drift.wave_drift_damping(q, omega=0.9, beta=0.2),
+        "encounter_frequency": lambda: jt.drift.encounter_frequency(w, 0.2, 2.0, 0.3),
+        "irregular_sailing_drift": lambda: jt.drift.irregular_sailing_drift(q, w, S, 0.2, 2.0),
+        "mean_drift": lambda: jt.waves.mean_drift(w, S, w**2),
+    }
+    for name, f in calls.items():
+        program = np.asarray(f())
+        with jax.disable_jit():
+            op_by_op = np.asarray(f())
+        np.testing.assert_allclose(program, op_by_op, rtol=1e-12, atol=1e-12, err_msg=name)
+
+
+def test_under_a_trace_the_function_joins_the_callers_program():
+    """Under the caller's jit, grad or vmap the function is traced into the caller's program
+    (no program of its own inside), and differentiates as before."""
+    model = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.Towline(l0=2.5, xp=0.5, EA=100.0))
+    y = jnp.array([1.0, 0.0, 0.0, 2.5, 0.0, 0.0])
+    jaxpr = jax.make_jaxpr(lambda y: jt.eigenvalues(model, y, throw=False))(y)
+    from jaxtow._stability import _eigenvalues
+
+    program = jax.jit(_eigenvalues.__wrapped__, static_argnames=("method",))  # pyright: ignore[reportFunctionMemberAccess]
+    nested = jax.make_jaxpr(lambda y: program(model, y, None))(y)
+    assert "name=_eigenvalues" in str(nested)  # what a program of its own looks like
+    for body in ("_eigenvalues", "_jacobian", "_vector_field"):
+        assert f"name={body}" not in str(jaxpr), body
+    q, w, S = _wave_inputs()
+
+    def surge(u):
+        return jt.drift.irregular_sailing_drift(q, w, S, 0.0, u)[0]
+
+    h = 1e-5
+    fd = (surge(2.0 + h) - surge(2.0 - h)) / (2 * h)
+    assert float(jax.jit(jax.grad(surge))(2.0)) == pytest.approx(float(fd), rel=1e-6)
+    us = jnp.array([1.0, 2.0])
+    np.testing.assert_allclose(jax.jit(jax.vmap(surge))(us), [surge(1.0), surge(2.0)], rtol=1e-12)
+
+
+def test_eager_checks_still_raise_and_non_array_tables_still_work():
+    """Bad input raises the same ValueError as before (checked on the host, not in the
+    program); a table given as a Python function runs as it did (no program)."""
+    q, w, S = _wave_inputs()
+    with pytest.raises(ValueError, match="strictly ascending"):
+        jt.drift.irregular_sailing_drift(q, w[::-1], S[::-1], 0.0, 2.0)
+    with pytest.raises(ValueError, match="strictly ascending"):
+        jt.waves.mean_drift(w[::-1], S, w)
+    with pytest.raises(ValueError, match="overtakes the waves"):
+        jt.drift.sailing_drift(q, 3.0, np.pi, u=5.0)
+    bad = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.Towline(l0=2.5, xp=0.5, EA=100.0))
+    bad = eqx.tree_at(lambda m: m.towline.l0, bad, -1.0)
+    with pytest.raises(ValueError, match="'l0'"):
+        jt.eigenvalues(bad, np.array([1.0, 0.0, 0.0, 2.5, 0.0, 0.0]))
+
+    def table(omega, beta):  # a zero-speed table as a plain function
+        return jnp.stack([-(omega**2) * jnp.cos(beta), jnp.sin(beta), 0.1 * jnp.sin(2 * beta)])
+
+    B = jt.drift.wave_drift_damping(table, omega=0.9, beta=0.3)
+    with jax.disable_jit():
+        np.testing.assert_allclose(B, jt.drift.wave_drift_damping(table, omega=0.9, beta=0.3))

@@ -35,6 +35,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
+from .._program_cache import host_program
 from .._rules import is_concrete
 from .._units import G
 from ._qtf import QTF
@@ -58,6 +59,11 @@ def encounter_frequency(
     means the vessel overtakes the waves (following seas faster than their phase speed):
     outside the drift model, flagged by `sailing_validity`.
     """
+    return _encounter_frequency(omega0, beta, u, v, g=g)
+
+
+@host_program()
+def _encounter_frequency(omega0, beta, u, v, *, g: float):
     omega0 = jnp.asarray(omega0)
     return omega0 + omega0**2 / g * (u * jnp.cos(beta) + v * jnp.sin(beta))
 
@@ -131,7 +137,12 @@ def wave_drift_damping(
                 f"{jnp.shape(value)}"
             )
     _check_heading(q, beta)
-    return damping_matrix(q, omega, beta, g=g)
+    return _wave_drift_damping(q, omega, beta, g=g)
+
+
+@host_program()
+def _wave_drift_damping(q, omega, beta, *, g: float):
+    return drift_and_damping(q, omega, beta, g=g)[1]
 
 
 def damping_matrix(q, omega, beta, *, g: float = G):

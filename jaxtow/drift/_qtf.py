@@ -29,6 +29,7 @@ import numpy as np
 from jaxtyping import Array, Float
 
 from .._interp import HermiteAxis
+from .._program_cache import host_program
 
 _COMPONENTS = ("fx", "fy", "nz")
 
@@ -254,7 +255,7 @@ class QTF(eqx.Module):
         in the table, so it is the ω weights and the β weights
         contracted with that block (`jaxtow._interp.HermiteAxis`). The result equals the tensor-product interpolant of the
         module docstring built from the full slope tables."""
-        return self._interpolate(self.values, omega, beta)
+        return _qtf_values(self, omega, beta)
 
     def moments(self, omega, beta) -> Float[Array, "3"]:
         """Sectional moments (M_x,1, M_y,1, M_y,2) per ζa² at one (ω, β), with the same
@@ -280,6 +281,12 @@ class QTF(eqx.Module):
         ww = jnp.where(rows > 0, ww, 0.0)  # the virtual row's value is 0
         block = values[:, jnp.maximum(rows - 1, 0)[:, None], cols[None, :]]  # (3, 4, 4)
         return jnp.sum(block * (ww[:, None] * wb[None, :]), axis=(1, 2))
+
+
+@host_program()
+def _qtf_values(q: QTF, omega, beta):
+    """`QTF.__call__`: one compiled program where it is called eagerly."""
+    return q._interpolate(q.values, omega, beta)
 
 
 class FullQTF(eqx.Module):

@@ -8,9 +8,11 @@ import jax
 import jax.numpy as jnp
 from jaxtyping import Array, ArrayLike, Float
 
+from .._program_cache import host_program
 from .._rules import guard, is_concrete
 from .._units import G
 from ..waves._irregular import mean_drift
+from ..waves._spectra import check_ascending
 from ._damping import (
     aranha,
     drift_and_damping,
@@ -70,6 +72,15 @@ def sailing_drift(
     own flags (``encounter_positive``, ``overtaken_energy``; `sailing_validity`).
     """
     check_form(form)
+    F = _sailing_drift(q, omega0, beta, u, v, r, form=form, yaw_rate=yaw_rate, g=g)
+    if not throw:
+        return F
+    we = encounter_frequency(omega0, beta, u, v, g=g)
+    return guard(F, [(we <= 0, _overtaken_message(we, "omega_e"))])
+
+
+@host_program(static_argnames=("form", "yaw_rate"))
+def _sailing_drift(q: QTF, omega0, beta, u, v, r, *, form: str, yaw_rate: bool, g: float):
     u, v, r = (jnp.asarray(x, float) for x in (u, v, r))
     omega0 = jnp.asarray(omega0, float)
     if form == "stationary":
@@ -88,10 +99,7 @@ def sailing_drift(
     else:
         col_r = yaw_rate_damping(q, omega0, beta, g=g) if yaw_rate else jnp.zeros(3)
         F = aranha(q, omega0, beta, u, v, g=g) + col_r * r
-    if not throw:
-        return F
-    we = encounter_frequency(omega0, beta, u, v, g=g)
-    return guard(F, [(we <= 0, _overtaken_message(we, "omega_e"))])
+    return F
 
 
 def _overtaken_message(x, what: str) -> str:
@@ -125,22 +133,34 @@ def irregular_sailing_drift(
     0.1 % of the peak spectral density with encounter frequency ≤ 0 (see `sailing_drift`;
     the error gives the share of m0 overtaken). ``throw=False`` counts no drift there."""
     check_form(form)
+    check_ascending(omega)  # eagerly, before the program (which sees no values)
+    out = _irregular_sailing_drift(q, omega, S, beta, u, v, r, form=form, yaw_rate=yaw_rate, g=g)
+    if not throw:
+        return out
+    return guard(out, [overtaken_check(omega, S, beta, u, v, g=g)])
+
+
+@host_program(static_argnames=("form", "yaw_rate"))
+def _irregular_sailing_drift(q: QTF, omega, S, beta, u, v, r, *, form, yaw_rate, g):
     omega, S = jnp.asarray(omega), jnp.asarray(S)
     F = jax.vmap(
         lambda w: sailing_drift(q, w, beta, u, v, r, form=form, yaw_rate=yaw_rate, g=g, throw=False)
     )(omega)
-    out = mean_drift(omega, S, F)
-    if not throw:
-        return out
-    return guard(out, [overtaken_check(omega, S, beta, u, v, g=g)])
+    return mean_drift(omega, S, F)
 
 
 def overtaken_check(omega, S, beta, u, v=0.0, *, g: float = G):
     """The check `irregular_sailing_drift` makes with ``throw=True``, as (predicate,
     message): the predicate holds where the vessel outruns part of the sea, a frequency
     carrying more than 0.1 % of the peak spectral density at encounter frequency ≤ 0."""
+    significant, share = _overtaken(omega, S, beta, u, v, g=g)
+    return significant, _overtaken_message(share, "share of the sea's m0")
+
+
+@host_program()
+def _overtaken(omega, S, beta, u, v, *, g: float):
     omega, S = jnp.asarray(omega), jnp.asarray(S)
     over = encounter_frequency(omega, beta, u, v, g=g) <= 0
     significant = jnp.any(over & (S > 1e-3 * jnp.max(S)))
     share = jnp.sum(jnp.where(over, S, 0.0)) / jnp.maximum(jnp.sum(S), 1e-300)
-    return significant, _overtaken_message(share, "share of the sea's m0")
+    return significant, share

@@ -13,6 +13,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, ArrayLike, Float
 
+from .._program_cache import host_program
 from ._spectra import check_ascending, integrate_density
 
 #: The default wave-frequency grid of every irregular-sea integral in jaxtow [rad/s]: 0.05-4
@@ -47,6 +48,12 @@ def spectral_integral(
             f"parameter {name!r} must have the frequency grid omega ({nw[0]}) on its first "
             f"axis, got shape {X.shape}"
         )
+    check_ascending(omega)  # eagerly, before the program (which sees no values)
+    return _spectral_integral(omega, S, X)
+
+
+@host_program()
+def _spectral_integral(omega, S, X):
     return 2.0 * integrate_density(omega, jnp.moveaxis(X, 0, -1) * jnp.asarray(S))
 
 
