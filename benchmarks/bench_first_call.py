@@ -52,6 +52,9 @@ CALLS = {
     "jacobian": "jt.jacobian(model, y + 0.01 * k)",
     "eigenvalues": "jt.eigenvalues(model, y + 0.01 * k)",
     "stability": "jt.stability(model, (y + 0.01 * k)[None])",
+    "analytic_equilibria": "jt.analytic_equilibria(jt.with_parameters(model, xp=0.5 + 0.01 * k))",
+    "heading_residual": "jt.heading_residual(0.1 + 0.01 * k, model)",
+    "Jonswap spectrum": "jt.waves.Jonswap(hs=2.4, tp=7.0 + 0.01 * k)(w[:300])",  # not the setup's shape
     "QTF (one look-up)": "q(0.9 + 0.01 * k, 0.1 * k)",
     "sailing_drift": "jt.drift.sailing_drift(q, 0.9 + 0.01 * k, 0.0, u=2.0)",
     "wave_drift_damping": "jt.drift.wave_drift_damping(q, omega=0.9 + 0.01 * k, beta=0.0)",

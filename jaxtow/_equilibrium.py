@@ -34,7 +34,7 @@ import numpy as np
 from jaxtyping import Array, Bool, Float, Int
 
 from ._dynamics import TowModel, force_breakdown, kinematics, towline_force, vector_field
-from ._program_cache import cached_call
+from ._program_cache import cached_call, host_program
 from ._roots import bisected_root, brackets
 from ._rules import check_now, guard, holds_tracers, is_concrete
 from ._towline import Towline
@@ -151,9 +151,14 @@ def heading_residual(psi, model: TowModel, *, throw: bool = True):
     a transverse attachment offset (the towline moment −T'(x_p' sin a + y_p' cos a) with
     T' sin a = Y, T' cos a = −X; see `jaxtow.vector_field` (docs/model.md section 2)).
     ``throw``: check the model's parameters (see `jaxtow.vector_field`)."""
-    X, Y, N = hull_forces_at_heading(psi, model)
-    out = N - model.towline.xp * Y + model.towline.yp * X
+    out = _heading_residual(psi, model)
     return guard(out, model.checks()) if throw else out
+
+
+@host_program()
+def _heading_residual(psi, model: TowModel):
+    X, Y, N = hull_forces_at_heading(psi, model)
+    return N - model.towline.xp * Y + model.towline.yp * X
 
 
 def _residual(psi, model: TowModel):
@@ -347,7 +352,15 @@ def analytic_equilibria(model: TowModel, *, throw: bool = True) -> Equilibria:
         raise ValueError("analytic_equilibria needs the elastic Towline (eq. 2.11)")
     if is_concrete(model.towline.yp) and float(model.towline.yp) != 0.0:
         raise ValueError("analytic_equilibria needs a centred towline (yp = 0); use equilibria")
-    ves, xp, EA, l0 = model.vessel, model.towline.xp, model.towline.EA, model.towline.l0
+    eqs = _analytic_equilibria(model)
+    return guard(eqs, model.checks()) if throw else eqs
+
+
+@host_program()
+def _analytic_equilibria(model: TowModel) -> Equilibria:
+    line = model.towline
+    assert isinstance(line, Towline)  # checked by `analytic_equilibria`
+    ves, xp, EA, l0 = model.vessel, line.xp, line.EA, line.l0
     rad = (ves.Nv - ves.Yv * xp) / (ves.Yvvv * xp - ves.Nvvv)  # eq. 6.8
     side = (rad > 0) & (rad < 1)
     vs = jnp.sqrt(jnp.where(side, rad, 0.25))
@@ -365,7 +378,7 @@ def analytic_equilibria(model: TowModel, *, throw: bool = True) -> Equilibria:
     )
     found = jnp.stack([side, jnp.asarray(True), side])
     branch = jnp.array([-1, 0, 1], dtype=jnp.int32)
-    eqs = Equilibria(
+    return Equilibria(
         state=state,
         psi=psi,
         gamma=gamma,
@@ -380,4 +393,3 @@ def analytic_equilibria(model: TowModel, *, throw: bool = True) -> Equilibria:
         residual=residual,
         n_roots=jnp.sum(found).astype(jnp.int32),
     )
-    return guard(eqs, model.checks()) if throw else eqs

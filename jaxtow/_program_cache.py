@@ -327,10 +327,10 @@ def host_program(*, static_argnames: tuple[str, ...] = ()) -> Callable[[F], F]:
 
     Called eagerly, a function of hundreds of small operations (a drift table's look-ups, a
     Jacobian by forward-mode autodiff, eigenvalues) compiles each operation on its first
-    use and dispatches them one by one on every call: 0.7-3.6 s for a first call and up to
-    90 ms for the next, measured on 2 cores (`benchmarks/bench_first_call.py`). As one
-    program it compiles once per static options and argument shapes and then runs in well
-    under a millisecond. Python numbers among the arguments are traced (weakly typed), so
+    use and dispatches them one by one on every call: 0.7-3.4 s for a first call and up to
+    83 ms for the next, measured on 2 cores (`benchmarks/bench_first_call.py`). As one
+    program it compiles once per static options and argument shapes (0.07-0.9 s) and then
+    runs in 0.04-1 ms. Python numbers among the arguments are traced (weakly typed), so
     another value reuses the program. The function holds no value checks of its own (under
     the program they would be host callbacks, or see no values): its public function checks
     the concrete result (`jaxtow._rules.guard`) and its grids before the program, and raises

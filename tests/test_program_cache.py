@@ -248,12 +248,16 @@ def test_eager_programs_equal_the_operations_run_one_by_one():
         "max_real_eigenvalue": lambda: jt.max_real_eigenvalue(model, eqs.state[0], "routh"),
         "stability": lambda: jt.stability(model, eqs.state).max_real,
         "routh_hurwitz_stable": lambda: jt.routh_hurwitz_stable(model, eqs.state[2]),
+        "heading_residual": lambda: jt.heading_residual(0.1, model),
+        "analytic_equilibria": lambda: jt.analytic_equilibria(model).state,
         "qtf": lambda: q(0.9, 0.3),
         "sailing_drift": lambda: jt.drift.sailing_drift(q, 0.9, 0.2, u=2.0, v=0.3, r=0.01),
         "wave_drift_damping": lambda: jt.drift.wave_drift_damping(q, omega=0.9, beta=0.2),
         "encounter_frequency": lambda: jt.drift.encounter_frequency(w, 0.2, 2.0, 0.3),
         "irregular_sailing_drift": lambda: jt.drift.irregular_sailing_drift(q, w, S, 0.2, 2.0),
         "mean_drift": lambda: jt.waves.mean_drift(w, S, w**2),
+        "jonswap": lambda: jt.waves.Jonswap(hs=2.4, tp=7.0, normalise=True)(w),
+        "pierson_moskowitz": lambda: jt.waves.pierson_moskowitz(w, hs=2.4, tp=7.0),
     }
     for name, f in calls.items():
         program = np.asarray(f())
@@ -295,6 +299,8 @@ def test_eager_checks_still_raise_and_non_array_tables_still_work():
         jt.drift.irregular_sailing_drift(q, w[::-1], S[::-1], 0.0, 2.0)
     with pytest.raises(ValueError, match="strictly ascending"):
         jt.waves.mean_drift(w[::-1], S, w)
+    with pytest.raises(ValueError, match="strictly ascending"):
+        jt.waves.Jonswap(hs=2.4, tp=7.0, normalise=True)(w[::-1])
     with pytest.raises(ValueError, match="overtakes the waves"):
         jt.drift.sailing_drift(q, 3.0, np.pi, u=5.0)
     bad = jt.TowModel(vessel=jt.presets.barge_2a(), towline=jt.Towline(l0=2.5, xp=0.5, EA=100.0))

@@ -14,6 +14,7 @@ import jax.numpy as jnp
 import numpy as np
 from jaxtyping import Array, Float
 
+from .._program_cache import host_program
 from .._rules import (
     FINITE,
     POSITIVE,
@@ -75,6 +76,13 @@ def integrate_density(omega, y):
 def jonswap_density(omega, hs, tp, gamma=3.3, sigma_a=0.07, sigma_b=0.09, normalise: bool = False):
     """The JONSWAP formula of `jonswap`, unchecked (the `Jonswap` sea state's fields are
     checked by their rules)."""
+    if normalise:
+        check_ascending(omega)  # eagerly, before the program (which sees no values)
+    return _jonswap_density(omega, hs, tp, gamma, sigma_a, sigma_b, normalise=normalise)
+
+
+@host_program(static_argnames=("normalise",))
+def _jonswap_density(omega, hs, tp, gamma, sigma_a, sigma_b, *, normalise: bool):
     s = _bretschneider(omega, hs, tp) * _peak_enhancement(
         jnp.asarray(omega), tp, gamma, sigma_a, sigma_b
     )
@@ -125,6 +133,7 @@ def pierson_moskowitz(omega, *, hs, tp):
     )
 
 
+@host_program()
 def _pierson_moskowitz(omega, hs, tp):
     """The formula of `pierson_moskowitz`, unchecked."""
     pos, w = _positive_omega(omega)
