@@ -152,8 +152,26 @@ def _call(mode: str, f, good, bad):
     return jax.vmap(f)(jnp.asarray([good, bad]))
 
 
-@pytest.mark.parametrize("mode", ["eager", "jax.jit", "eqx.filter_jit", "vmap"])
-@pytest.mark.parametrize("name", sorted(CASES))
+MODES = ("eager", "jax.jit", "eqx.filter_jit", "vmap")
+#: Under an eager `jax.vmap` these run operation by operation, batched: 6-10 s each on 2
+#: cores. Their vmap case runs in the slow suite; their other three stay here, and the other
+#: functions' vmap cases too.
+HEAVY_VMAP = {
+    "irregular_sailing_drift",
+    "required_pull (sea state)",
+    "resistance (speed)",
+    "stability",
+}
+
+
+@pytest.mark.parametrize(
+    ("name", "mode"),
+    [
+        pytest.param(n, m, marks=pytest.mark.slow) if m == "vmap" and n in HEAVY_VMAP else (n, m)
+        for n in sorted(CASES)
+        for m in MODES
+    ],
+)
 def test_bad_parameter_is_named(name, mode):
     f, good, bad, message, _ = CASES[name]
     with pytest.raises(Exception) as info:
