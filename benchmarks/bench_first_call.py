@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import statistics
 import subprocess
 import sys
@@ -147,8 +148,6 @@ def main(argv=None):
     ap.add_argument("--json", default=str(OUT))
     ap.add_argument("--docs", action="store_true", help="write the table into docs")
     args = ap.parse_args(argv)
-    import os
-
     res = dict(cpu_count=os.cpu_count(), calls={}, numpy_s=numpy_calls())
     for name, call in CALLS.items():
         res["calls"][name] = {mode: child(call, mode) for mode in ("op by op", "program")}
